@@ -1,0 +1,36 @@
+// Plugin interface. A plugin is a shared library (libpaddy_<name>.so) on the plugin search path
+// that exports one C entry point:
+//
+//   extern "C" PADDY_PLUGIN_EXPORT int paddy_register_plugin(paddy::PluginRegistry* registry);
+//
+// It calls registry->addSubModel(...) / addGeometry(...) for everything it provides and returns
+// PADDY_PLUGIN_ABI_VERSION. The engine refuses a plugin built against another ABI version.
+// Search path: the directories in $PADDY_PLUGIN_PATH (':'-separated), then the plugin directory
+// next to the paddy executable (<prefix>/lib/paddy/plugins).
+#pragma once
+
+#include <paddy/contact_model.hpp>
+
+#include <string>
+#include <vector>
+
+#define PADDY_PLUGIN_ABI_VERSION 1
+#define PADDY_PLUGIN_EXPORT __attribute__((visibility("default")))
+
+namespace paddy {
+
+struct GeometryInfo;  // declared in paddy/geometry.hpp (wall builders)
+
+class PluginRegistry {
+ public:
+  virtual ~PluginRegistry() = default;
+  virtual void addSubModel(SubModelInfo info) = 0;
+  virtual void addGeometry(const GeometryInfo& info) = 0;
+};
+
+}  // namespace paddy
+
+extern "C" {
+// The one entry point every plugin defines.
+typedef int (*paddy_register_plugin_fn)(paddy::PluginRegistry* registry);
+}
