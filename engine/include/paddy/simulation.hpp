@@ -49,6 +49,7 @@ struct ContactRecord {
   Vec3 normal = Vec3::Zero();
   double fn = 0.0;
   Vec3 ft = Vec3::Zero();
+  std::vector<double> history;  // the contact's history block (all sub-models, in chain order)
 };
 
 struct TimeStepPolicy {

@@ -1,0 +1,48 @@
+// HDF5 snapshots of a simulation and the XDMF index that lets ParaView open them.
+//
+// Layout of one snapshot file (all SI units):
+//   /particles/{id (u64, N), material (i32, N), radius (N), position, velocity, omega, force (N×3)}
+//   /contacts/{id_i, id_j (u64, M), wall (u8, M), overlap (M), normal (M×3), fn (M), ft (M×3)}
+//   root attributes: time (double), step (u64)
+// A SnapshotWriter numbers its files snap_000000.h5, snap_000001.h5, ... in its directory and
+// rewrites particles.xmf (a temporal collection of Polyvertex grids) after each one.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace paddy {
+class Simulation;
+}
+
+namespace paddy::io {
+
+// Writes one snapshot file (atomically). Throws std::runtime_error naming the file on failure.
+void writeSnapshot(const Simulation& sim, const std::filesystem::path& file);
+
+struct SnapshotEntry {
+  std::string file;  // file name relative to the XDMF file's directory
+  double time = 0.0;
+  std::uint64_t particles = 0;
+};
+
+// The XDMF text for a list of snapshots (exposed for tests).
+std::string xdmfText(const std::vector<SnapshotEntry>& entries);
+
+class SnapshotWriter {
+ public:
+  explicit SnapshotWriter(std::filesystem::path dir) : dir_(std::move(dir)) {}
+  // Writes the next snapshot and the updated XDMF; returns the snapshot's path. The first call
+  // removes stale snap_*.h5 files and particles.xmf left in the directory by an earlier run.
+  std::filesystem::path write(const Simulation& sim);
+  const std::filesystem::path& directory() const { return dir_; }
+  std::size_t count() const { return entries_.size(); }
+
+ private:
+  std::filesystem::path dir_;
+  std::vector<SnapshotEntry> entries_;
+};
+
+}  // namespace paddy::io

@@ -1,0 +1,92 @@
+// Minimal RAII wrapper over the HDF5 C API for the engine's own files (checkpoints): 1-D or
+// N×k datasets of doubles and integers addressed by "group/name", and scalar attributes.
+#pragma once
+
+#include <hdf5.h>
+
+#include <paddy/errors.hpp>
+
+#include <cstdint>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace paddy::h5 {
+
+template <class T>
+hid_t nativeType() {
+  if constexpr (std::is_same_v<T, double>) return H5T_NATIVE_DOUBLE;
+  else if constexpr (std::is_same_v<T, std::uint64_t>) return H5T_NATIVE_UINT64;
+  else if constexpr (std::is_same_v<T, std::int64_t>) return H5T_NATIVE_INT64;
+  else static_assert(sizeof(T) == 0, "unsupported HDF5 element type");
+}
+
+class File {
+ public:
+  static File create(const std::string& path) {
+    hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (id < 0) throw InputError("cannot create HDF5 file '" + path + "'");
+    return File(id, path);
+  }
+  static File open(const std::string& path) {
+    hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    if (id < 0) throw InputError("cannot open HDF5 file '" + path + "' (missing or not HDF5)");
+    return File(id, path);
+  }
+  File(File&& o) noexcept : id_(o.id_), path_(std::move(o.path_)) { o.id_ = -1; }
+  File(const File&) = delete;
+  ~File() {
+    if (id_ >= 0) H5Fclose(id_);
+  }
+
+  template <class T>
+  void write(const std::string& name, const std::vector<T>& data, hsize_t columns = 1) {
+    hid_t lcpl = H5Pcreate(H5P_LINK_CREATE);
+    H5Pset_create_intermediate_group(lcpl, 1);
+    const hsize_t dims[2] = {static_cast<hsize_t>(data.size() / columns), columns};
+    hid_t space = H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr);
+    hid_t set = H5Dcreate2(id_, name.c_str(), nativeType<T>(), space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
+    herr_t st = set >= 0 ? H5Dwrite(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) : -1;
+    if (set >= 0) H5Dclose(set);
+    H5Sclose(space);
+    H5Pclose(lcpl);
+    if (st < 0) throw InputError("cannot write dataset '" + name + "' to '" + path_ + "'");
+  }
+
+  template <class T>
+  std::vector<T> read(const std::string& name) const {
+    hid_t set = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+    if (set < 0) throw InputError("HDF5 file '" + path_ + "' has no dataset '" + name + "'");
+    hid_t space = H5Dget_space(set);
+    const hssize_t n = H5Sget_simple_extent_npoints(space);
+    std::vector<T> out(static_cast<std::size_t>(n));
+    herr_t st = n > 0 ? H5Dread(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) : 0;
+    H5Sclose(space);
+    H5Dclose(set);
+    if (st < 0) throw InputError("cannot read dataset '" + name + "' from '" + path_ + "'");
+    return out;
+  }
+
+  void writeAttr(const std::string& name, double value) {
+    hid_t space = H5Screate(H5S_SCALAR);
+    hid_t attr = H5Acreate2(id_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
+    H5Aclose(attr);
+    H5Sclose(space);
+  }
+  double readAttr(const std::string& name) const {
+    hid_t attr = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
+    if (attr < 0) throw InputError("HDF5 file '" + path_ + "' has no attribute '" + name + "'");
+    double v = 0.0;
+    H5Aread(attr, H5T_NATIVE_DOUBLE, &v);
+    H5Aclose(attr);
+    return v;
+  }
+
+ private:
+  File(hid_t id, std::string path) : id_(id), path_(std::move(path)) {}
+  hid_t id_ = -1;
+  std::string path_;
+};
+
+}  // namespace paddy::h5

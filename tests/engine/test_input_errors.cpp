@@ -1,0 +1,91 @@
+#include "test_models.hpp"
+
+#include <paddy/errors.hpp>
+#include <paddy/simulation.hpp>
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace paddy;
+using Catch::Matchers::Contains;
+
+TEST_CASE("an unknown contact model lists the available ones", "[engine][errors]") {
+  Simulation sim(test::testPlugins());
+  const int mud = sim.addMaterial(test::mud());
+  InteractionSpec spec;
+  spec.normal = "hertz_typo";
+  spec.damping = spec.tangential = "";
+  REQUIRE_THROWS_WITH(sim.setInteraction(mud, mud, spec),
+                      Contains("unknown normal contact model 'hertz_typo'") && Contains("linear_spring"));
+}
+
+TEST_CASE("parameters are checked by name and range", "[engine][errors]") {
+  Simulation sim(test::testPlugins());
+  const int mud = sim.addMaterial(test::mud());
+  InteractionSpec spec;
+  spec.normal = "linear_spring";
+  spec.damping = spec.tangential = "";
+  spec.params["stiffnes"] = 1.0;
+  REQUIRE_THROWS_WITH(sim.setInteraction(mud, mud, spec), Contains("'stiffnes'") && Contains("accept: stiffness"));
+  spec.params.clear();
+  spec.params["stiffness"] = -5.0;
+  REQUIRE_THROWS_WITH(sim.setInteraction(mud, mud, spec),
+                      Contains("'stiffness' = -5") && Contains("allowed range [0, 1e+12]"));
+  REQUIRE_THROWS_WITH(sim.addMaterial(Material{"clay", 1500.0, 1e6, 0.7}), Contains("clay.poisson") && Contains("0.5"));
+}
+
+TEST_CASE("materials that meet without an interaction are reported", "[engine][errors]") {
+  Simulation sim(test::testPlugins());
+  const int mud = sim.addMaterial(test::mud());
+  const int sand = sim.addMaterial(Material{"sand", 2600.0, 1e7, 0.3});
+  InteractionSpec spec;
+  spec.normal = "linear_spring";
+  spec.damping = spec.tangential = "";
+  sim.setInteraction(mud, mud, spec);
+  sim.addParticle(Vec3(0, 0, 0), 1e-3, mud);
+  sim.addParticle(Vec3(1.9e-3, 0, 0), 1e-3, sand);
+  REQUIRE_THROWS_WITH(sim.step(1), Contains("'mud' and 'sand'") || Contains("'sand' and 'mud'"));
+}
+
+TEST_CASE("an exploding contact is caught before it explodes", "[engine][errors][stability]") {
+  Simulation sim(test::testPlugins());
+  const int mud = sim.addMaterial(test::mud());
+  InteractionSpec spec;
+  spec.normal = "linear_spring";
+  spec.damping = spec.tangential = "";
+  spec.params["stiffness"] = 1e-3;  // far too soft for the impact speed
+  sim.setInteraction(mud, mud, spec);
+  sim.setGravity(Vec3::Zero());
+  sim.addParticle(Vec3(-1.1e-3, 0, 0), 1e-3, mud, Vec3(5.0, 0, 0));
+  sim.addParticle(Vec3(1.1e-3, 0, 0), 1e-3, mud, Vec3(-5.0, 0, 0));
+  REQUIRE_THROWS_AS(sim.step(200), InstabilityError);
+  Simulation again(test::testPlugins());
+  try {
+    const int m = again.addMaterial(test::mud());
+    again.setInteraction(m, m, spec);
+    again.setGravity(Vec3::Zero());
+    again.addParticle(Vec3(-1.1e-3, 0, 0), 1e-3, m, Vec3(5.0, 0, 0));
+    again.addParticle(Vec3(1.1e-3, 0, 0), 1e-3, m, Vec3(-5.0, 0, 0));
+    again.step(200);
+    FAIL("no instability reported");
+  } catch (const InstabilityError& e) {
+    REQUIRE_THAT(e.what(), Contains("% of the particle radius") && Contains("time step"));
+    // Caught at the step that crossed the 50 % threshold: the overlap is still below 80 %
+    // of the radius (unchecked, the spheres would pass through each other).
+    const auto& x = again.particles().position;
+    REQUIRE(std::abs(x[1].x() - x[0].x()) > 2e-3 - 0.8e-3);
+  }
+}
+
+TEST_CASE("particles created overlapping are reported before the first step", "[engine][errors]") {
+  Simulation sim(test::testPlugins());
+  const int mud = sim.addMaterial(test::mud());
+  InteractionSpec spec;
+  spec.normal = "linear_spring";
+  spec.damping = spec.tangential = "";
+  sim.setInteraction(mud, mud, spec);
+  sim.addParticle(Vec3(0, 0, 0), 1e-3, mud);
+  sim.addParticle(Vec3(0.5e-3, 0, 0), 1e-3, mud);
+  REQUIRE_THROWS_WITH(sim.step(1), Contains("created overlapping"));
+}
