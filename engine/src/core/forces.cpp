@@ -49,6 +49,11 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   }
   const std::size_t n_wall = wall_found.size();
   std::vector<Vec3> wall_force(n_wall, Vec3::Zero());
+  // Velocities the contact laws see: at a step, predicted to the end of the step (see
+  // predictVelocities); otherwise the current ones.
+  const bool predicted = pass == ForcePass::Step && v_eval.size() == n;
+  const Vec3* vel = predicted ? v_eval.data() : p.velocity.data();
+  const Vec3* omg = predicted ? w_eval.data() : p.omega.data();
 
 #pragma omp parallel num_threads(nthreads)
   {
@@ -131,9 +136,8 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         const double rj = p.radius[j];
         const double overlap = ri + rj - dist;
         const Vec3 cj = (rj - 0.5 * overlap) * nrm;
-        const Vec3 vj_contact = p.velocity[j] + p.omega[j].cross(cj);
-        kernel::fill(b, m, nrm, overlap, ri, rj, p.mass[i], p.mass[j], p.velocity[i], p.omega[i], vj_contact,
-                     p.omega[j]);
+        const Vec3 vj_contact = vel[j] + omg[j].cross(cj);
+        kernel::fill(b, m, nrm, overlap, ri, rj, p.mass[i], p.mass[j], vel[i], omg[i], vj_contact, omg[j]);
         if (stride > 0) std::copy_n(&list.history[k * stride], stride, b.history + m * stride);
         w.i[m] = static_cast<std::uint32_t>(i);
         w.j[m] = j;
@@ -156,7 +160,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       ContactBatch& b = w.batch;
       const std::size_t m = b.n;
       const double inf = std::numeric_limits<double>::infinity();
-      kernel::fill(b, m, wc.normal, wc.overlap, p.radius[i], inf, p.mass[i], inf, p.velocity[i], p.omega[i],
+      kernel::fill(b, m, wc.normal, wc.overlap, p.radius[i], inf, p.mass[i], inf, vel[i], omg[i],
                    wall.velocityAt(wc.point), wall.angularVelocity());
       if (stride > 0) std::copy_n(&wall_hist[c * stride], stride, b.history + m * stride);
       w.i[m] = i;

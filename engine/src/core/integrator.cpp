@@ -74,6 +74,24 @@ void Simulation::Impl::sortSpatially(Simulation& s) {
   permute(prev_index);
 }
 
+void Simulation::Impl::predictVelocities(Simulation& s) {
+  ParticleArrays& p = s.p_;
+  const std::size_t n = p.size();
+  if (!predict_velocities) {
+    v_eval.clear();
+    w_eval.clear();
+    return;
+  }
+  v_eval.resize(n);
+  w_eval.resize(n);
+  const double half = 0.5 * s.dt_;
+#pragma omp parallel for schedule(static) num_threads(s.threads_)
+  for (std::size_t i = 0; i < n; ++i) {
+    v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
+    w_eval[i] = p.omega[i] + (half / p.inertia[i]) * p.torque[i];
+  }
+}
+
 namespace {
 void checkTimeStep(Simulation& s, double dt, bool explicit_dt) {
   if (s.particles().size() == 0) return;
@@ -130,6 +148,7 @@ void Simulation::step(std::uint64_t n) {
     for (const auto& w : walls_) wall_disp = std::max(wall_disp, w->displacementSinceListBuild());
     if (2.0 * disp > m.skin || disp + wall_disp > m.skin) m.rebuild(*this);
 
+    m.predictVelocities(*this);
     m.computeForces(*this, Impl::ForcePass::Step);
     if (m.max_overlap_ratio > kMaxOverlapRatio) {
       std::ostringstream msg;

@@ -11,6 +11,7 @@
 #include <paddy/simulation.hpp>
 
 #include <cstdint>
+#include <cstdlib>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -69,6 +70,12 @@ struct Simulation::Impl {
   std::vector<ThreadBuffers> threads;
   double dt_fraction = 0.0;   // requested as a fraction of the Rayleigh time (0: explicit dt)
   bool dt_explicit = false;
+
+  // Velocities at the end of the step, predicted as v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m, used by
+  // velocity-dependent laws (damping) at a step (integrator.cpp).
+  std::vector<Vec3> v_eval, w_eval;
+  bool predict_velocities = true;
+  void predictVelocities(Simulation& s);
 
   std::vector<ContactRecord> last_records;
   std::uint64_t active_contacts = 0;

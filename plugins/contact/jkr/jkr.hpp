@@ -1,0 +1,119 @@
+// Normal sub-model "jkr": Hertz-Mindlin with JKR cohesion (Johnson, Kendall & Roberts 1971), in the
+// form of the EDEM 2018 theory reference guide (γ = surface energy; work of adhesion = 2γ):
+//
+//   F_JKR = −4 sqrt(π γ E*) a^{3/2} + 4E*/(3R*) a³
+//   δ     = a²/R* − sqrt(4 π γ a / E*)
+//
+// a(δ) is the root on the stable branch (the larger root, a ≥ a_m, a_m³ = πγR*²/(4E*) being the
+// minimum of δ(a)). With L³ = πγR*²/E*, ℓ = L²/R* and a = L t², the relation is the quartic
+// t⁴ − 2t = δ/ℓ, solved by Newton from an upper bound (monotone, quadratic convergence, about 6
+// iterations; residual ~1e-16 relative). The force is F = πγR* (4/3 t⁶ − 4 t³).
+//
+// Cut-off (EDEM): a_c = [9πγR*²/(2E*) (3/4 − 1/√2)]^{1/3}, δ_c = a_c²/R* − sqrt(4πγ a_c/E*) < 0
+// (δ_c = −1.18643 ℓ). Note F(a_c) = −1.5 πγR*, i.e. a_c is where the force is half the peak
+// attraction on the small-a (unstable) branch; the stable-branch force at δ_c is −1.83218 πγR*.
+//   jkr_hysteretic = 0 (EDEM): force on the stable branch whenever δ ≥ δ_c, approach and
+//                    separation alike (conservative: no net work over a cycle).
+//   jkr_hysteretic = 1: no force before first touch (δ ≥ 0 forms the contact, history flag), then
+//                    the JKR branch holds in tension until δ < δ_c (release). Contact formation
+//                    as in LAMMPS' "jkr" (which, unlike here, releases at the force-controlled
+//                    pull-off δ_f = −0.5724 ℓ). Loses the adhesion work
+//                    W = −∫_{δ_c}^{0} F dδ = 3.33397 πγL² per approach–separation cycle.
+// Shared state: active = 1 inside the cut-off, a, S_n = 2E*a, S_t = 8G*a,
+// fn_friction = 4E*a³/(3R*) (the repulsive, Hertzian part of F_JKR).
+// maxSeparation(R*) = −δ_c. With γ = 0 the model is "hertz" exactly (same code path).
+// Parameters: surface_energy γ [J/m²] ∈ [0, 100]; jkr_hysteretic ∈ {0, 1}.
+#pragma once
+
+#include "../common/contact_math.hpp"
+#include "../hertz_mindlin/hertz.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace paddy::contact {
+
+class JkrNormal final : public SubModel {
+ public:
+  JkrNormal(double e_star, double g_star, double gamma, bool hysteretic)
+      : e_star_(e_star), g_star_(g_star), gamma_(gamma), hysteretic_(hysteretic) {}
+
+  // Dimensionless constants of the quartic t⁴ − 2t = δ/ℓ.
+  static double criticalOverlapScaled() {  // δ_c / ℓ from the EDEM a_c
+    const double ac = std::cbrt(4.5 * (0.75 - 1.0 / std::numbers::sqrt2));  // a_c / L
+    return ac * ac - 2.0 * std::sqrt(ac);
+  }
+  static double minimumOverlapScaled() { return -1.5 / std::cbrt(2.0); }  // min δ/ℓ, at t³ = 1/2
+
+  // Largest root t of t⁴ − 2t = d (stable branch), for d ≥ minimumOverlapScaled().
+  static double solveScaled(double d) {
+    const double t_min = 1.0 / std::cbrt(2.0);
+    if (d <= minimumOverlapScaled()) return t_min;
+    // Upper bound: t0³ ≥ 4 and t0⁴ ≥ 2d give t0⁴ ≥ 2 t0 + d.
+    double t = std::max(std::cbrt(4.0), d > 0.0 ? std::sqrt(std::sqrt(2.0 * d)) : 0.0);
+    for (int it = 0; it < 60; ++it) {  // convex, increasing for t > t_min: monotone from above
+      const double t3 = t * t * t;
+      const double g = t3 * t - 2.0 * t - d;
+      if (!(g > 0.0)) break;
+      const double step = g / (4.0 * t3 - 2.0);
+      t -= step;
+      // Quadratic convergence: after a step below 1e-12 t the error is ~1e-24 t. (A tighter test
+      // would chase rounding noise.)
+      if (step <= 1e-12 * t) break;
+    }
+    return std::max(t, t_min);
+  }
+
+  double lengthScale(double r) const { return std::cbrt(std::numbers::pi * gamma_ * r * r / e_star_); }  // L
+  double overlapScale(double r) const { const double l = lengthScale(r); return l * l / r; }            // ℓ
+  double criticalOverlap(double r) const { return criticalOverlapScaled() * overlapScale(r); }           // δ_c
+  double contactRadius(double overlap, double r) const {
+    const double t = solveScaled(overlap / overlapScale(r));
+    return lengthScale(r) * t * t;
+  }
+
+  std::size_t historySize() const override { return hysteretic_ ? 1 : 0; }
+  double maxSeparation(double r_eff) const override { return gamma_ > 0.0 ? -criticalOverlap(r_eff) : 0.0; }
+
+  void compute(ContactBatch& b, std::size_t offset) const override {
+    if (gamma_ == 0.0) {
+      for (std::size_t k = 0; k < b.n; ++k) {
+        HertzNormal::contact(b, k, e_star_, g_star_);
+        if (hysteretic_) b.historyOf(k, offset)[0] = b.active[k];
+      }
+      return;
+    }
+    const double dc_scaled = criticalOverlapScaled();
+    for (std::size_t k = 0; k < b.n; ++k) {
+      const double r = b.r_eff[k], d = b.overlap[k];
+      const double len = lengthScale(r), ell = len * len / r;
+      const double ds = d / ell;
+      bool on = ds >= dc_scaled;
+      if (hysteretic_) {
+        double& touched = b.historyOf(k, offset)[0];
+        if (d >= 0.0) touched = 1.0;
+        if (!on) touched = 0.0;
+        on = on && touched != 0.0;
+      }
+      if (!on) continue;
+      const double t = solveScaled(ds);
+      const double t3 = t * t * t;
+      const double a = len * t * t;
+      const double fscale = std::numbers::pi * gamma_ * r;  // πγR*
+      const double repulsive = fscale * (4.0 / 3.0) * t3 * t3;  // 4E*a³/(3R*)
+      b.active[k] = 1;
+      b.contact_radius[k] = a;
+      b.fn[k] += repulsive - fscale * 4.0 * t3;
+      b.fn_friction[k] = repulsive;
+      b.stiffness_n[k] = 2.0 * e_star_ * a;
+      b.stiffness_t[k] = 8.0 * g_star_ * a;
+    }
+  }
+
+ private:
+  double e_star_, g_star_, gamma_;
+  bool hysteretic_;
+};
+
+}  // namespace paddy::contact
