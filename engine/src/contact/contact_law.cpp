@@ -50,9 +50,12 @@ ContactLaw::ContactLaw(const PluginManager& plugins, const InteractionSpec& spec
   }
   for (const auto& [name, p] : specs) {
     if (values_.count(name)) continue;
-    if (p.required)
-      throw InputError("parameter '" + name + "' is required by the contact model (" + p.description +
-                       "), allowed range [" + std::to_string(p.min) + ", " + std::to_string(p.max) + "] " + p.unit);
+    if (p.required) {
+      std::ostringstream msg;
+      msg << "parameter '" << name << "' is required by the contact model (" << p.description
+          << "), allowed range [" << p.min << ", " << p.max << "]" << (p.unit.empty() ? "" : " " + p.unit);
+      throw InputError(msg.str());
+    }
     values_[name] = p.default_value;
   }
 
