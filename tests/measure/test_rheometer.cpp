@@ -6,6 +6,12 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -155,13 +161,35 @@ TEST_CASE("measure: relative errors as the reference defines them", "[measure][e
   // δ = |Ym − Ys| / Ys: slump 231 vs 235, flow 480 vs 478.
   const auto e = relativeErrors({231.0, 480.0}, {235.0, 478.0});
   REQUIRE(e.per_point.size() == 2);
-  CHECK(e.per_point[0] == Approx(4.0 / 235.0));
-  CHECK(e.per_point[1] == Approx(2.0 / 478.0));
-  CHECK(e.mean == Approx((4.0 / 235.0 + 2.0 / 478.0) / 2));
-  CHECK(e.max == Approx(4.0 / 235.0));
-  CHECK(relativeError(100.0, 80.0) == Approx(0.25));  // the simulated value is the denominator
-  CHECK_THROWS_WITH(relativeErrors({1.0}, {0.0}), Contains("simulated value is 0"));
+  CHECK(e.per_point[0] == Approx(4.0 / 231.0));
+  CHECK(e.per_point[1] == Approx(2.0 / 480.0));
+  CHECK(e.mean == Approx((4.0 / 231.0 + 2.0 / 480.0) / 2));
+  CHECK(e.max == Approx(4.0 / 231.0));
+  CHECK(relativeError(100.0, 80.0) == Approx(0.20));  // the measured value is the denominator
+  CHECK_THROWS_WITH(relativeErrors({0.0}, {1.0}), Contains("measured value is 0"));
   CHECK_THROWS_WITH(relativeErrors({1.0, 2.0}, {1.0}), Contains("2 measured values but 1"));
   CHECK_THROWS_WITH(relativeErrors({}, {}), Contains("no values"));
   CHECK_THROWS_AS(relativeError(std::nan(""), 1.0), InputError);
+}
+
+TEST_CASE("measure: relative errors reproduce the reference's Table 6", "[measure]") {
+  const char* src = std::getenv("PADDY_SOURCE_DIR");
+  REQUIRE(src != nullptr);
+  std::ifstream in(std::string(src) + "/../shared/reference/table6_steepest_ascent.csv");
+  REQUIRE(in.good());
+  std::string line;
+  std::getline(in, line);  // header
+  int rows = 0;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) v.push_back(std::stod(cell));
+    REQUIRE(v.size() == 8);
+    // columns: run, A, B, C, slump, slump error %, flow, flow error %
+    CHECK(100.0 * relativeError(231.0, v[4]) == Approx(v[5]).margin(0.005));
+    CHECK(100.0 * relativeError(480.0, v[6]) == Approx(v[7]).margin(0.005));
+    ++rows;
+  }
+  REQUIRE(rows == 4);
 }

@@ -1,4 +1,4 @@
-// Relative errors δ = |Y_measured − Y_sim| / Y_sim (reference study's definition).
+// Relative errors δ = |Y_measured − Y_sim| / Y_measured (see relative_error.hpp).
 #include <paddy/errors.hpp>
 #include <paddy/measure/relative_error.hpp>
 
@@ -14,8 +14,8 @@ double relativeError(double measured, double simulated) {
     s << "relativeError: measured " << measured << " and simulated " << simulated << " must be finite";
     throw InputError(s.str());
   }
-  if (simulated == 0.0) throw InputError("relativeError: the simulated value is 0, so delta = |Ym - Ys|/Ys is undefined");
-  return std::abs(measured - simulated) / std::abs(simulated);
+  if (measured == 0.0) throw InputError("relativeError: the measured value is 0, so delta = |Ym - Ys|/Ym is undefined");
+  return std::abs(measured - simulated) / std::abs(measured);
 }
 
 RelativeErrors relativeErrors(const std::vector<double>& measured, const std::vector<double>& simulated) {

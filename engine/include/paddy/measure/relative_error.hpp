@@ -1,12 +1,14 @@
-// Relative error of a simulated response against its measurement, as the reference study defines
-// it: δ = |Y_measured − Y_sim| / Y_sim (the simulated value is the denominator).
+// Relative error of a simulated response against its measurement: δ = |Y_measured − Y_sim| /
+// Y_measured. The reference's README writes Y_sim in the denominator, but every percentage of its
+// Table 6 is reproduced only with the measured value there (27/231 = 11.69 %, not 27/258), so
+// Paddy follows the table; tests/measure checks all eight Table 6 percentages.
 #pragma once
 
 #include <vector>
 
 namespace paddy::measure {
 
-// Throws InputError for non-finite values or Y_sim = 0.
+// Throws InputError for non-finite values or Y_measured = 0.
 double relativeError(double measured, double simulated);
 
 struct RelativeErrors {
