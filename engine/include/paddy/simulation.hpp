@@ -121,8 +121,10 @@ class Simulation {
 
  private:
   struct Impl;
-  std::unique_ptr<Impl> impl_;
+  // Declared first so it is destroyed last: the contact laws in impl_ hold code from the plugin
+  // libraries the manager unloads when it goes.
   std::shared_ptr<const PluginManager> plugins_;
+  std::unique_ptr<Impl> impl_;
   std::vector<Material> materials_;
   std::vector<std::unique_ptr<Wall>> walls_;
   ParticleArrays p_;

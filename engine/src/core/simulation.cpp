@@ -13,7 +13,7 @@
 namespace paddy {
 
 Simulation::Simulation(std::shared_ptr<const PluginManager> plugins)
-    : impl_(std::make_unique<Impl>()), plugins_(std::move(plugins)) {
+    : plugins_(std::move(plugins)), impl_(std::make_unique<Impl>()) {
   if (!plugins_) throw InputError("Simulation needs a PluginManager");
   impl_->dt_fraction = TimeStepPolicy::kDefaultRayleighFraction;
 }
