@@ -10,6 +10,7 @@ packages=(
   libhdf5-dev hdf5-tools
   catch2 libcli11-dev libboost-math-dev libboost-dev nlohmann-json3-dev libfmt-dev
   libnlopt-cxx-dev libnlopt-dev
+  libssl-dev
   gnuplot-nox
 )
 # Optional: comparison codes for bench/ (not needed to build or test).
