@@ -143,6 +143,7 @@ void Simulation::loadCheckpoint(const std::string& path) {
     double rmax = 0.0, sep = 0.0;
     for (double r : p_.radius) rmax = std::max(rmax, r);
     for (const auto& lw : impl_->laws) sep = std::max(sep, lw.maxSeparation(rmax));
+    impl_->wall_max_gap = sep;
     ParticleView view{l.x_at_build.size(), l.x_at_build.data(), p_.radius.data()};
     for (auto& w : walls_) {
       w->moveTo(impl_->list_build_time);

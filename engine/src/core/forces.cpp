@@ -39,10 +39,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   // Wall contacts are found serially (each wall may parallelise its own search).
   std::vector<double> wall_hist;
   if (!s.walls_.empty()) {
-    double rmax = 0.0;
-    for (double r : p.radius) rmax = std::max(rmax, r);
-    double max_gap = 0.0;
-    for (const auto& law : laws) max_gap = std::max(max_gap, law.maxSeparation(rmax));
+    const double max_gap = wall_max_gap;  // set at the list build, when radii last changed
     if (!dry)
       for (auto& w : s.walls_) w->resetLoads();
     collectWallContacts(s, max_gap, wall_hist);

@@ -34,9 +34,10 @@ void Simulation::Impl::rebuild(Simulation& s) {
   if (sort_interval > 0 && s.list_builds_ % static_cast<std::size_t>(sort_interval) == 0) sortSpatially(s);
   list.build(p, prev_index, skin, history_stride, laws, law_index, s.materials_, s.threads_);
   std::iota(prev_index.begin(), prev_index.end(), std::size_t{0});
+  wall_max_gap = 0.0;
+  for (const auto& law : laws) wall_max_gap = std::max(wall_max_gap, law.maxSeparation(rmax));
   if (!s.walls_.empty()) {
-    double sep = 0.0;
-    for (const auto& law : laws) sep = std::max(sep, law.maxSeparation(rmax));
+    const double sep = wall_max_gap;
     ParticleView view{p.size(), p.position.data(), p.radius.data()};
     for (auto& w : s.walls_) {
       w->buildCandidates(view, rmax + sep + skin);

@@ -59,6 +59,7 @@ struct Simulation::Impl {
   double skin_fraction = 0.4;
   double skin = 0.0;
   double list_build_time = 0.0;
+  double wall_max_gap = 0.0;  // largest gap any law acts at for the largest particle (walls)
   int sort_interval = 20;
 
   // walls
