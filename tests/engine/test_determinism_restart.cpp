@@ -16,9 +16,7 @@ std::unique_ptr<Simulation> makeGranularGas(int threads) {
   auto sim = std::make_unique<Simulation>(test::testPlugins());
   const int mud = sim->addMaterial(test::mud());
   const int steel = sim->addMaterial(Material{"steel", 7800.0, 7e9, 0.3});
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   spec.extras = {"contact_age"};
   spec.params["stiffness"] = 200.0;
   sim->setInteraction(mud, mud, spec);

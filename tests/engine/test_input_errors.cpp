@@ -23,9 +23,7 @@ TEST_CASE("an unknown contact model lists the available ones", "[engine][errors]
 TEST_CASE("parameters are checked by name and range", "[engine][errors]") {
   Simulation sim(test::testPlugins());
   const int mud = sim.addMaterial(test::mud());
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   spec.params["stiffnes"] = 1.0;
   REQUIRE_THROWS_WITH(sim.setInteraction(mud, mud, spec), Contains("'stiffnes'") && Contains("accept: stiffness"));
   spec.params.clear();
@@ -39,9 +37,7 @@ TEST_CASE("materials that meet without an interaction are reported", "[engine][e
   Simulation sim(test::testPlugins());
   const int mud = sim.addMaterial(test::mud());
   const int sand = sim.addMaterial(Material{"sand", 2600.0, 1e7, 0.3});
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   sim.setInteraction(mud, mud, spec);
   sim.addParticle(Vec3(0, 0, 0), 1e-3, mud);
   sim.addParticle(Vec3(1.9e-3, 0, 0), 1e-3, sand);
@@ -51,10 +47,7 @@ TEST_CASE("materials that meet without an interaction are reported", "[engine][e
 TEST_CASE("an exploding contact is caught before it explodes", "[engine][errors][stability]") {
   Simulation sim(test::testPlugins());
   const int mud = sim.addMaterial(test::mud());
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
-  spec.params["stiffness"] = 1e-3;  // far too soft for the impact speed
+  auto spec = test::linearSpring(1e-3);  // far too soft for the impact speed
   sim.setInteraction(mud, mud, spec);
   sim.setGravity(Vec3::Zero());
   sim.addParticle(Vec3(-1.1e-3, 0, 0), 1e-3, mud, Vec3(5.0, 0, 0));
@@ -81,9 +74,7 @@ TEST_CASE("an exploding contact is caught before it explodes", "[engine][errors]
 TEST_CASE("particles created overlapping are reported before the first step", "[engine][errors]") {
   Simulation sim(test::testPlugins());
   const int mud = sim.addMaterial(test::mud());
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   sim.setInteraction(mud, mud, spec);
   sim.addParticle(Vec3(0, 0, 0), 1e-3, mud);
   sim.addParticle(Vec3(0.5e-3, 0, 0), 1e-3, mud);

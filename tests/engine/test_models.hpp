@@ -3,6 +3,7 @@
 #pragma once
 
 #include <paddy/plugin_manager.hpp>
+#include <paddy/simulation.hpp>
 
 #include <memory>
 
@@ -58,5 +59,14 @@ inline std::shared_ptr<PluginManager> testPlugins() {
 }
 
 inline Material mud() { return Material{"mud", 1680.0, 1e6, 0.5}; }
+
+// An interaction made of the linear spring alone (no damping, no tangential model).
+inline InteractionSpec linearSpring(double stiffness = 1000.0) {
+  InteractionSpec spec;
+  spec.normal = "linear_spring";
+  spec.damping = spec.tangential = "";
+  spec.params["stiffness"] = stiffness;
+  return spec;
+}
 
 }  // namespace paddy::test

@@ -12,9 +12,7 @@ using namespace paddy;
 
 namespace {
 InteractionSpec springWithAge() {
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   spec.extras = {"contact_age"};
   return spec;
 }

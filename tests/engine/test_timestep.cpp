@@ -42,9 +42,7 @@ TEST_CASE("a time step above the stable limit is refused with the limit in the m
 TEST_CASE("default time step is 0.2 Rayleigh times and is applied at the first step", "[engine][timestep]") {
   Simulation sim(test::testPlugins());
   const int mud = sim.addMaterial(test::mud());
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   sim.setInteraction(mud, mud, spec);
   sim.addParticle(Vec3(0, 0, 0), 1e-3, mud);
   sim.step(1);
@@ -55,9 +53,7 @@ TEST_CASE("default time step is 0.2 Rayleigh times and is applied at the first s
 TEST_CASE("free fall under gravity is integrated exactly by velocity Verlet", "[engine][integrator]") {
   Simulation sim(test::testPlugins());
   const int mud = sim.addMaterial(test::mud());
-  InteractionSpec spec;
-  spec.normal = "linear_spring";
-  spec.damping = spec.tangential = "";
+  auto spec = test::linearSpring();
   sim.setInteraction(mud, mud, spec);
   sim.addParticle(Vec3(0, 0, 1), 1e-3, mud, Vec3(0.1, 0, 0));
   sim.run(0.1);

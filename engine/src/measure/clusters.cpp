@@ -1,5 +1,6 @@
 // Connected clusters of spheres (surface gap ≤ gap): union–find over a sorted cell list
 // (cells hashed to their particle ranges).
+#include "util/union_find.hpp"
 #include <paddy/errors.hpp>
 #include <paddy/measure/clusters.hpp>
 
@@ -14,22 +15,7 @@ namespace paddy::measure {
 
 namespace {
 
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t i) {
-    while (parent[i] != i) {
-      parent[i] = parent[parent[i]];
-      i = parent[i];
-    }
-    return i;
-  }
-  void unite(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using DisjointSets = paddy::UnionFind<std::size_t>;
 
 // 21 bits per coordinate, offset so negative cells stay distinct.
 std::uint64_t cellKey(std::int64_t i, std::int64_t j, std::int64_t k) {
@@ -72,7 +58,7 @@ Clusters connectedClusters(const std::vector<Vec3>& x, const std::vector<double>
     b = e;
   }
 
-  UnionFind uf(n);
+  DisjointSets uf(n);
   // Half shell: the own cell (pairs q > p) and the 13 cells with offset (di, dj, dk) > 0 in
   // lexicographic order; union is symmetric, so every pair is seen once.
   for (std::size_t p = 0; p < n; ++p) {

@@ -1,5 +1,6 @@
 // Mesh validation and measures (see mesh_check.hpp). Edges are found by sorting the 3·T
 // (min vertex, max vertex, triangle) records; components by union-find over shared edges.
+#include "util/union_find.hpp"
 #include <paddy/errors.hpp>
 #include <paddy/geometry/mesh_check.hpp>
 
@@ -37,19 +38,7 @@ std::vector<EdgeRec> sortedEdges(const TriangleMesh& m) {
   return e;
 }
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using DisjointSets = paddy::UnionFind<std::uint32_t>;
 
 std::string vec(const Vec3& v) {
   std::ostringstream s;
@@ -61,7 +50,7 @@ std::string vec(const Vec3& v) {
 
 std::vector<std::uint32_t> connectedComponents(const TriangleMesh& mesh, std::size_t* count) {
   const auto edges = sortedEdges(mesh);
-  UnionFind uf(mesh.triangles.size());
+  DisjointSets uf(mesh.triangles.size());
   for (std::size_t i = 1; i < edges.size(); ++i)
     if (edges[i].key == edges[i - 1].key) uf.unite(edges[i].tri, edges[i - 1].tri);
   std::vector<std::uint32_t> comp(mesh.triangles.size());

@@ -1,4 +1,5 @@
 // MeshWall: see mesh_wall.hpp for the contact algorithm, the region keys and the candidate grid.
+#include "util/union_find.hpp"
 #include <paddy/errors.hpp>
 #include <paddy/geometry/closest_point.hpp>
 #include <paddy/geometry/mesh_check.hpp>
@@ -39,19 +40,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 double cosDeg(double deg) { return std::cos(deg * kPi / 180.0); }
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
+using DisjointSets = paddy::UnionFind<std::uint32_t>;
 }  // namespace
 
 MeshWall::MeshWall(std::string name, int material, TriangleMesh body_mesh, const geometry::Pose& placement,
@@ -100,7 +89,7 @@ void MeshWall::buildTopology() {
   std::size_t ncomp = 0;
   const auto comp = geometry::connectedComponents(mesh_, &ncomp);
   comp_open.assign(ncomp, 0);
-  UnionFind regions(nt);
+  DisjointSets regions(nt);
   const double cos_region = cosDeg(opt_.region_angle_deg);
   for (std::size_t i = 0; i < recs.size();) {
     std::size_t j = i;
