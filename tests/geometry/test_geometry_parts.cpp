@@ -3,13 +3,17 @@
 #include <paddy/errors.hpp>
 #include <paddy/geometry/cgal_ops.hpp>
 #include <paddy/geometry/mesh_check.hpp>
+#include <paddy/geometry/mesh_io.hpp>
 #include <paddy/geometry/parts.hpp>
 #include <paddy/plugin.hpp>
+#include <paddy/plugin_manager.hpp>
 
 #include <catch2/catch.hpp>
 #include <dlfcn.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <cstdlib>
 #include <map>
 
@@ -202,8 +206,10 @@ std::map<std::string, double> defaults(const GeometryInfo& g) {
 
 struct Registry : PluginRegistry {
   std::vector<GeometryInfo> parts;
+  std::vector<MeshReaderInfo> readers;
   void addSubModel(SubModelInfo) override {}
   void addGeometry(const GeometryInfo& g) override { parts.push_back(g); }
+  void addMeshReader(const MeshReaderInfo& r) override { readers.push_back(r); }
 };
 }  // namespace
 
@@ -239,4 +245,31 @@ TEST_CASE("geometry plugin registers slump_cone, plate, cup and vane") {
     CHECK(cone.triangles.size() == 192);
   }
   dlclose(h);
+}
+
+TEST_CASE("geometry plugin registers the mesh reader; the plugin manager finds it by extension") {
+  const char* path_env = std::getenv("PADDY_PLUGIN_PATH");
+  const std::string dir = path_env ? path_env : PADDY_TEST_PLUGIN_DIR;
+  const std::string stl = (std::filesystem::temp_directory_path() / "paddy_reader_test.stl").string();
+  TriangleMesh plate = buildPlate({.side = 100.0, .divisions = 2});  // "millimetres"
+  writeStl(stl, plate, /*binary=*/false);
+  {
+    PluginManager pm;
+    pm.loadLibrary(dir + "/libpaddy_geometry.so");
+    const auto& provides = pm.loaded().at(0).provides;
+    CHECK(std::find(provides.begin(), provides.end(), "mesh_reader:cgal") != provides.end());
+    CHECK(pm.meshExtensions() == std::vector<std::string>{".obj", ".off", ".stl"});
+    const MeshReaderInfo& reader = pm.meshReader(".STL");  // case-insensitive
+    CHECK(reader.name == "cgal");
+    // The reader applies no scale or placement: the file's own coordinates come back.
+    const TriangleMesh m = reader.read(stl);
+    CHECK(m.triangles.size() == plate.triangles.size());
+    const Bounds b = bounds(m);
+    CHECK(b.hi.x() == Approx(50.0));
+    CHECK(b.lo.x() == Approx(-50.0));
+    CHECK_THROWS_WITH(pm.meshReader(".ply"), Contains("'.ply'") && Contains(".obj, .off, .stl"));
+    CHECK_THROWS_WITH(reader.read(stl + ".missing.stl"), Contains("paddy_reader_test.stl.missing.stl") &&
+                                                            Contains("mesh file not found"));
+  }
+  std::filesystem::remove(stl);
 }

@@ -3,7 +3,8 @@
 //
 //   extern "C" PADDY_PLUGIN_EXPORT int paddy_register_plugin(paddy::PluginRegistry* registry);
 //
-// It calls registry->addSubModel(...) / addGeometry(...) for everything it provides and returns
+// It calls registry->addSubModel(...) / addGeometry(...) / addMeshReader(...) for everything it
+// provides and returns
 // PADDY_PLUGIN_ABI_VERSION. The engine refuses a plugin built against another ABI version.
 // Search path: the directories in $PADDY_PLUGIN_PATH (':'-separated), then the plugin directory
 // next to the paddy executable (<prefix>/lib/paddy/plugins).
@@ -19,13 +20,17 @@
 
 namespace paddy {
 
-struct GeometryInfo;  // declared in paddy/geometry.hpp (wall builders)
+struct GeometryInfo;    // declared in paddy/geometry.hpp (wall builders)
+struct MeshReaderInfo;  // declared in paddy/geometry.hpp (mesh-file readers)
 
 class PluginRegistry {
  public:
   virtual ~PluginRegistry() = default;
   virtual void addSubModel(SubModelInfo info) = 0;
   virtual void addGeometry(const GeometryInfo& info) = 0;
+  // Mesh-file readers by extension. Not pure, so registries that only care about sub-models and
+  // parts (test doubles) need not implement it; the engine's registry records them.
+  virtual void addMeshReader(const MeshReaderInfo& info) { (void)info; }
 };
 
 }  // namespace paddy

@@ -1,5 +1,5 @@
 // PluginManager: finds plugin libraries on the search path, loads them through their one C entry
-// point and keeps what they register (contact sub-models, geometry builders).
+// point and keeps what they register (contact sub-models, geometry builders, mesh-file readers).
 #pragma once
 
 #include <paddy/plugin.hpp>
@@ -13,7 +13,7 @@ namespace paddy {
 
 struct LoadedPlugin {
   std::string path;
-  std::vector<std::string> provides;  // "normal:hertz", "geometry:slump_cone", ...
+  std::vector<std::string> provides;  // "normal:hertz", "geometry:slump_cone", "mesh_reader:cgal", ...
 };
 
 class PluginManager {
@@ -41,6 +41,11 @@ class PluginManager {
   void addGeometry(const GeometryInfo& info);
   const GeometryInfo& geometry(const std::string& name) const;  // throws, listing choices
   std::vector<std::string> geometryNames() const;
+  // Readers by extension (".stl"; compared in lower case). A later reader for an extension
+  // replaces an earlier one. meshReader throws InputError listing the extensions available.
+  void addMeshReader(const MeshReaderInfo& info);
+  const MeshReaderInfo& meshReader(const std::string& extension) const;
+  std::vector<std::string> meshExtensions() const;
 
  private:
   struct Impl;

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
@@ -18,6 +19,7 @@ namespace fs = std::filesystem;
 struct PluginManager::Impl {
   std::map<std::pair<SubModelKind, std::string>, SubModelInfo> sub_models;
   std::map<std::string, GeometryInfo> geometries;
+  std::map<std::string, MeshReaderInfo> readers;  // by lower-case extension
   std::vector<void*> handles;
 };
 
@@ -35,11 +37,20 @@ class RecordingRegistry final : public PluginRegistry {
     provides.push_back("geometry:" + info.name);
     manager_.addGeometry(info);
   }
+  void addMeshReader(const MeshReaderInfo& info) override {
+    provides.push_back("mesh_reader:" + info.name);
+    manager_.addMeshReader(info);
+  }
   std::vector<std::string> provides;
 
  private:
   PluginManager& manager_;
 };
+
+std::string lowerCase(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
 
 std::string executableDir() {
   std::error_code ec;
@@ -55,6 +66,7 @@ PluginManager::~PluginManager() {
   // Registered std::function objects point into the libraries: drop them before unloading.
   impl_->sub_models.clear();
   impl_->geometries.clear();
+  impl_->readers.clear();
   for (void* h : impl_->handles) dlclose(h);
 }
 
@@ -165,6 +177,38 @@ const GeometryInfo& PluginManager::geometry(const std::string& name) const {
 std::vector<std::string> PluginManager::geometryNames() const {
   std::vector<std::string> out;
   for (const auto& [n, info] : impl_->geometries) out.push_back(n);
+  return out;
+}
+
+void PluginManager::addMeshReader(const MeshReaderInfo& info) {
+  if (info.name.empty() || !info.read || info.extensions.empty())
+    throw InputError("a plugin registered a mesh reader without name, extensions or read function");
+  for (const auto& ext : info.extensions) {
+    std::string e = lowerCase(ext);
+    if (e.empty() || e[0] != '.') e = "." + e;
+    impl_->readers[e] = info;
+  }
+}
+
+const MeshReaderInfo& PluginManager::meshReader(const std::string& extension) const {
+  std::string e = lowerCase(extension);
+  if (!e.empty() && e[0] != '.') e = "." + e;
+  auto it = impl_->readers.find(e);
+  if (it != impl_->readers.end()) return it->second;
+  std::ostringstream msg;
+  msg << "no mesh reader for files '" << (e.empty() ? std::string("(no extension)") : e) << "'; readable: ";
+  bool first = true;
+  for (const auto& [ext, info] : impl_->readers) {
+    msg << (first ? "" : ", ") << ext;
+    first = false;
+  }
+  if (first) msg << "(none — the geometry plugin provides .stl, .off, .obj; is PADDY_PLUGIN_PATH set?)";
+  throw InputError(msg.str());
+}
+
+std::vector<std::string> PluginManager::meshExtensions() const {
+  std::vector<std::string> out;
+  for (const auto& [ext, info] : impl_->readers) out.push_back(ext);
   return out;
 }
 

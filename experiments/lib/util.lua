@@ -1,0 +1,142 @@
+-- Small helpers shared by the Lua experiments: rest criterion, output files, CSV input, number
+-- lists in parameters, and gnuplot pictures (PNG via pngcairo, run with os.execute).
+local M = {}
+
+-- RMS translational speed of the particles, mass-weighted: v = sqrt(2 KE_trans / M). The
+-- rotational part is left out on purpose: the constant-torque rolling model lets resting spheres
+-- chatter in rotation (the torque flips sign every step), which would keep sim:kinetic_energy()
+-- from ever falling although nothing moves. `total_mass` is unused (kept for the call sites).
+function M.rms_speed(sim, total_mass)
+  local v = sim:velocities()
+  local radii = sim:radii()
+  local sum, mass = 0, 0
+  for i = 1, #v do
+    local m = radii[i] ^ 3
+    local w = v[i]
+    sum = sum + m * (w[1] * w[1] + w[2] * w[2] + w[3] * w[3])
+    mass = mass + m
+  end
+  if mass <= 0 then return 0 end
+  return math.sqrt(sum / mass)
+end
+
+-- Total mass of the particles: Σ ρ 4/3 π r³ (one density).
+function M.total_mass(sim, density)
+  local m = 0
+  for _, r in ipairs(sim:radii()) do m = m + density * 4 / 3 * math.pi * r ^ 3 end
+  return m
+end
+
+-- Path inside the output directory.
+function M.out(name)
+  return paddy.out_dir .. "/" .. name
+end
+
+-- Writes rows (arrays of numbers) as whitespace-separated columns, with a header comment.
+function M.write_columns(name, header, rows)
+  local f = assert(io.open(M.out(name), "w"))
+  f:write("# ", header, "\n")
+  for _, row in ipairs(rows) do
+    local cells = {}
+    for k, v in ipairs(row) do cells[k] = string.format("%.9g", v) end
+    f:write(table.concat(cells, " "), "\n")
+  end
+  f:close()
+  return M.out(name)
+end
+
+-- Writes a CSV file with a header line.
+function M.write_csv(name, columns, rows)
+  local f = assert(io.open(M.out(name), "w"))
+  f:write(table.concat(columns, ","), "\n")
+  for _, row in ipairs(rows) do
+    local cells = {}
+    for k, v in ipairs(row) do cells[k] = type(v) == "number" and string.format("%.9g", v) or tostring(v) end
+    f:write(table.concat(cells, ","), "\n")
+  end
+  f:close()
+  return M.out(name)
+end
+
+-- Reads a CSV file with a header line into an array of {column = number or string}.
+function M.read_csv(path)
+  local f, err = io.open(path, "r")
+  if not f then error("cannot read CSV file '" .. path .. "': " .. tostring(err), 2) end
+  local header, rows = nil, {}
+  local line_no = 0
+  for line in f:lines() do
+    line_no = line_no + 1
+    line = line:gsub("\r$", "")
+    if line:match("%S") and not line:match("^%s*#") then
+      local cells = {}
+      for cell in (line .. ","):gmatch("([^,]*),") do cells[#cells + 1] = cell:match("^%s*(.-)%s*$") end
+      if not header then
+        header = cells
+      else
+        local row = {}
+        for k, name in ipairs(header) do row[name] = tonumber(cells[k]) or cells[k] end
+        row._line = line_no
+        rows[#rows + 1] = row
+      end
+    end
+  end
+  f:close()
+  if not header then error("CSV file '" .. path .. "' is empty", 2) end
+  return rows, header
+end
+
+-- "5, 10,20" → {5, 10, 20}; error naming the parameter on anything else.
+function M.numbers(text, what)
+  local list = {}
+  for item in tostring(text):gmatch("[^,;%s]+") do
+    local v = tonumber(item)
+    if not v then error(what .. ": '" .. item .. "' is not a number", 2) end
+    list[#list + 1] = v
+  end
+  if #list == 0 then error(what .. " is empty", 2) end
+  return list
+end
+
+-- Runs a gnuplot script (text) written to <stem>.gp inside the output directory; the picture
+-- is <stem>.png. Returns the PNG path, or nil and a message when gnuplot fails (pictures are
+-- optional: the measurements do not depend on them).
+function M.gnuplot(stem, script)
+  local gp = M.out(stem .. ".gp")
+  local png = M.out(stem .. ".png")
+  local f = assert(io.open(gp, "w"))
+  f:write("set terminal pngcairo size 900,700 noenhanced font 'sans,11'\n")
+  f:write(string.format("set output '%s'\n", png))
+  f:write(script, "\n")
+  f:close()
+  local ok = os.execute(string.format("gnuplot '%s' > '%s' 2>&1", gp, M.out(stem .. ".log")))
+  if not ok then
+    local msg = "gnuplot failed on " .. gp .. " (see " .. M.out(stem .. ".log") .. ")"
+    io.stderr:write("warning: ", msg, "\n")
+    return nil, msg
+  end
+  os.remove(M.out(stem .. ".log"))
+  return png
+end
+
+-- Mean of values[i] for i in [first, last].
+function M.mean(values, first, last)
+  local s, n = 0, 0
+  for i = first or 1, last or #values do
+    s = s + values[i]
+    n = n + 1
+  end
+  return n > 0 and s / n or 0 / 0
+end
+
+-- Sample standard deviation of the same range.
+function M.std(values, first, last)
+  local m = M.mean(values, first, last)
+  local s, n = 0, 0
+  for i = first or 1, last or #values do
+    s = s + (values[i] - m) ^ 2
+    n = n + 1
+  end
+  return n > 1 and math.sqrt(s / (n - 1)) or 0
+end
+
+return M

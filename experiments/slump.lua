@@ -1,0 +1,276 @@
+-- Virtual slump test of the reference paddy mud (GB/T 50080-2016; shared/reference/README.md),
+-- measured like the physical test. Documentation: docs/experiments.md.
+--
+--   paddy run experiments/slump.lua --out results/slump [--set particle_diameter=0.008 ...]
+--
+-- 1. Fill the steel cone (inner diameters 100/200 mm, 300 mm high) standing on a steel plate
+--    with mud spheres (lattice or random, seeded; monodisperse or normal sizes), a little above
+--    the rim; let them settle inside the fixed cone until at rest (kinetic-energy criterion);
+--    strike off the excess above the rim, as the standard prescribes.
+-- 2. Lift the cone at lift_speed. The lift stops when the cone's bottom edge is `clearance`
+--    above the highest particle under it (the cone is then free of the pile; lifting it further
+--    would only cost time: 300 mm at 0.05 m/s = 6 s).
+-- 3. Run until the pile is at rest (RMS speed from the kinetic energy below rest_speed, at least
+--    min_rest_time after the lift) or max_time after the start of the lift.
+-- 4. Measure slump (300 mm − pile height at the axis), slump-flow (top-view image + circle fit,
+--    and ruler diameters), the pile profile h(r) and the slump history s(t).
+-- Coarse graining: spheres of particle_diameter d instead of the reference's 2 mm; the contact
+-- parameters are scaled with α = d / 2 mm (paddy.coarse_grain: γ_JKR ∝ α, the others unchanged)
+-- and both the reference and the scaled values go to result.json.
+--
+-- cone = "none" releases the cone-shaped column at once (no cone wall, no settling): the limit of
+-- an infinitely fast lift, and a test of the measurements without mesh walls.
+local mud = require("lib.mud")
+local util = require("lib.util")
+
+local P = paddy.parameters(mud.parameters{
+  {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04,
+   description = "mean sphere diameter (reference 0.002; coarse grained above)"},
+  {name = "size_spread", default = 0.0, min = 0, max = 0.3, description = "relative std of the diameters, normal, truncated at 2 std (0: monodisperse)"},
+  {name = "packing", default = "lattice", choices = {"lattice", "random"}, description = "initial packing of the fill"},
+  {name = "seed", default = 0, type = "integer", min = 0, max = 2147483647, description = "fill seed (0: --seed)"},
+  {name = "lift_speed", default = 0.05, unit = "m/s", min = 0.001, max = 2, description = "cone lift speed"},
+  {name = "cone", default = "mesh", choices = {"mesh", "none"}, description = "mesh: lift the steel cone; none: release the column at once"},
+  {name = "cone_height", default = 0.3, unit = "m", min = 0.01, max = 1, description = "cone height (GB/T 50080: 0.3)"},
+  {name = "cone_top_diameter", default = 0.1, unit = "m", min = 0.01, max = 1, description = "cone top inner diameter"},
+  {name = "cone_bottom_diameter", default = 0.2, unit = "m", min = 0.01, max = 1, description = "cone bottom inner diameter"},
+  {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "fill this fraction of the height above the rim, struck off after settling"},
+  {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time (0.3 is unstable with this JKR mud)"},
+  {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone"},
+  {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
+  {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
+  {name = "slump_tolerance", default = 0.001, unit = "m", min = 0, max = 0.1, description = "see rest_window (0: KE criterion only)"},
+  {name = "min_rest_time", default = 0.3, unit = "s", min = 0, max = 10, description = "shortest run after settling start / after the lift before 'at rest' counts"},
+  {name = "clearance", default = 0.02, unit = "m", min = 0, max = 0.3, description = "the lift stops this far above the pile top"},
+  {name = "max_time", default = 5.0, unit = "s", min = 0.01, max = 60, description = "time limit from the start of the lift"},
+  {name = "history_interval", default = 0.05, unit = "s", min = 0.001, max = 1, description = "slump history sampling"},
+  {name = "snapshot_interval", default = 0.25, unit = "s", min = 0, max = 10, description = "snapshots for ParaView (0: none)"},
+  {name = "pixel", default = 0.001, unit = "m", min = 1e-5, max = 0.01, description = "pixel of the top-view image"},
+  {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
+  {name = "progress", default = true, description = "progress line on stderr"},
+})
+
+local wall_start = os.time()
+local d = P.particle_diameter
+local R_bottom, R_top, H = P.cone_bottom_diameter / 2, P.cone_top_diameter / 2, P.cone_height
+local seed = P.seed > 0 and P.seed or paddy.seed
+
+-- Coarse graining of the contact parameters from the reference 2 mm spheres.
+local cg = mud.coarse_grain(P, d)
+
+local sim = paddy.simulation{gravity = {0, 0, -9.81}, threads = paddy.threads}
+local m_mud, m_steel = mud.setup(sim, P, cg.params)
+sim:add_wall{type = "plane", point = {0, 0, 0}, normal = {0, 0, 1}, material = m_steel, name = "plate"}
+
+local cone
+if P.cone == "mesh" then
+  if not sim.add_mesh_wall then
+    error("slump.lua: this build has no mesh walls (sim:add_mesh_wall); run with --set cone=none")
+  end
+  cone = sim:add_mesh_wall{
+    name = "cone", material = m_steel, part = "slump_cone",
+    params = {top_diameter = P.cone_top_diameter, bottom_diameter = P.cone_bottom_diameter, height = H},
+    motion = {type = "fixed"},
+  }
+end
+
+-- Fill: the cone's inside, extended by `overfill` above the rim with the same taper when the cone
+-- holds the mud (struck off after settling).
+local fill_h = P.cone == "mesh" and H * (1 + P.overfill) or H
+local fill_r_top = R_bottom + (R_top - R_bottom) * fill_h / H
+local fill = {
+  region = {type = "cone", base = {0, 0, 0}, radius_bottom = R_bottom, radius_top = fill_r_top, height = fill_h},
+  radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed,
+}
+if P.packing == "lattice" then
+  fill.packing, fill.spacing, fill.jitter = "lattice", 1.02, 0.5
+else
+  fill.packing, fill.volume_fraction = "random", 0.5
+end
+local filled, solid_fraction = sim:fill(fill)
+local dt = sim:timestep{fraction = P.timestep_fraction}
+local mass = util.total_mass(sim, P.mud_density)
+io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n",
+                              filled, d * 1000, cg.alpha, dt))
+
+local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
+
+-- Highest particle top (z + r) under the cone's bottom ring (those the rising cone could touch).
+local function top_under_cone()
+  local xs, ys, zs = sim:xyz()
+  local radii = sim:radii()
+  local top = 0
+  for i = 1, #xs do
+    local r = radii[i]
+    if xs[i] ^ 2 + ys[i] ^ 2 < (R_bottom + r) ^ 2 then top = math.max(top, zs[i] + r) end
+  end
+  return top
+end
+
+-- 1. Settle inside the fixed cone, then strike off.
+local settle_time, struck = 0, 0
+if cone then
+  local t0, tops = sim:time(), {}
+  sim:run{
+    duration = P.settle_max_time, every = P.history_interval, snapshot_every = snapshot_every,
+    progress = P.progress,
+    callback = function(s)
+      -- At rest: KE criterion, or the top under the cone steady within slump_tolerance over rest_window.
+      local t = s:time() - t0
+      tops[#tops + 1] = {t = t, top = top_under_cone()}
+      local lo, hi, span = math.huge, -math.huge, 0
+      for k = #tops, 1, -1 do
+        if tops[k].t < t - P.rest_window - 1e-9 then break end
+        lo, hi, span = math.min(lo, tops[k].top), math.max(hi, tops[k].top), t - tops[k].t
+      end
+      local steady = P.slump_tolerance > 0 and span >= P.rest_window - 1e-9 and hi - lo <= P.slump_tolerance
+      return not (t >= P.min_rest_time and (util.rms_speed(s, mass) < P.rest_speed or steady))
+    end,
+  }
+  settle_time = sim:time() - t0
+  struck = sim:remove_if(function(i, x, y, z, r) return z + r > H end)
+  mass = util.total_mass(sim, P.mud_density)
+end
+local particles = sim:count()
+local function measure_slump()
+  return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
+end
+local initial = measure_slump()
+
+-- 2.–3. Lift and come to rest.
+local t_lift = sim:time()
+local lift_stop, rest_time, at_rest, rest_criterion = nil, nil, false, nil
+local history = {}
+if cone then
+  sim:set_motion(cone, {type = "translate", velocity = {0, 0, P.lift_speed}, start = t_lift})
+else
+  lift_stop = t_lift
+end
+local function sample(s)
+  local t = s:time()
+  local v = util.rms_speed(s, mass)
+  local cone_z = cone and P.lift_speed * ((lift_stop or t) - t_lift) or nil
+  history[#history + 1] = {t = t - t_lift, slump_mm = measure_slump().slump * 1000, rms_speed = v,
+                           cone_bottom_mm = cone_z and cone_z * 1000 or nil}
+  if not lift_stop then
+    if cone_z > top_under_cone() + P.clearance then
+      sim:set_motion(cone, {type = "fixed"})
+      lift_stop = t
+      io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm\n", t - t_lift, cone_z * 1000))
+    end
+    return true
+  end
+  -- Slump steady over the last rest_window seconds (the operator would read the ruler now)?
+  local steady = false
+  if P.slump_tolerance > 0 and t - lift_stop >= P.rest_window then
+    local lo, hi, span = math.huge, -math.huge, 0
+    for k = #history, 1, -1 do
+      local h = history[k]
+      if h.t < t - t_lift - P.rest_window - 1e-9 then break end
+      lo, hi = math.min(lo, h.slump_mm), math.max(hi, h.slump_mm)
+      span = t - t_lift - h.t
+    end
+    steady = span >= P.rest_window - 1e-9 and (hi - lo) / 1000 <= P.slump_tolerance
+  end
+  if t - lift_stop >= P.min_rest_time and (v < P.rest_speed or steady) then
+    at_rest = true
+    rest_time = t - t_lift
+    rest_criterion = v < P.rest_speed and "kinetic_energy" or "slump_steady"
+    return false
+  end
+  return true
+end
+sample(sim)
+sim:run{duration = P.max_time, every = P.history_interval, snapshot_every = snapshot_every,
+        progress = P.progress, callback = sample}
+if not at_rest then
+  io.stderr:write(string.format("warning: slump: the pile is not at rest after max_time = %g s (RMS speed %.3g m/s)\n",
+                                P.max_time, util.rms_speed(sim, mass)))
+end
+
+-- 4. Measurements.
+local final = measure_slump()
+local flow = sim:measure_slump_flow{
+  axis = {0, 0}, base_z = 0, pixel = P.pixel, ruler = "max_perpendicular",
+  png = P.pictures and "slump_flow_top.png" or nil,
+  title = "Slump test: top view of the final pile",
+  pgm = "slump_flow_top.pgm",
+}
+local profile = sim:measure_profile{axis = {0, 0}, base_z = 0, largest_cluster = true}
+local profile_out = {}
+for k, b in ipairs(profile) do
+  profile_out[k] = {r_mm = b.r * 1000, h_mm = b.h * 1000, coverage = b.coverage, particles = b.particles}
+end
+
+-- Pictures: side view of the pile, slump history (the top view comes from measure).
+local pictures = {top_view = flow.png, top_view_pgm = flow.pgm}
+if P.pictures then
+  local xs, _, zs = sim:xyz()
+  local radii = sim:radii()
+  local rows = {}
+  for i = 1, #xs do rows[i] = {xs[i] * 1000, zs[i] * 1000, radii[i] * 1000} end
+  util.write_columns("side_view.dat", "x_mm z_mm r_mm (all particles, projected on x-z)", rows)
+  local prof = {}
+  for k, b in ipairs(profile) do
+    prof[#prof + 1] = {b.r * 1000, b.h * 1000}
+  end
+  util.write_columns("profile.dat", "r_mm h_mm", prof)
+  pictures.side_view = util.gnuplot("side_view", string.format([[
+set title 'Slump test: final pile, side view (slump %.0f mm, slump-flow %.0f mm)'
+set xlabel 'x [mm]'; set ylabel 'z [mm]'; set size ratio -1; set grid
+set xrange [-%g:%g]; set yrange [0:%g]
+plot '%s' using 1:2:3 with circles fill solid 0.5 noborder lc rgb '#8b5a2b' title 'particles', \
+     '%s' using 1:2 with lines lw 2 lc rgb 'blue' title 'profile h(r)', \
+     '%s' using (-$1):2 with lines lw 2 lc rgb 'blue' notitle, \
+     '-' using 1:2 with lines dt 2 lc rgb 'black' title 'cone (initial)'
+-%g 0
+-%g %g
+%g %g
+%g 0
+e]], final.slump * 1000, flow.diameter_fit * 1000, math.max(300, flow.diameter_fit * 600), math.max(300, flow.diameter_fit * 600),
+     H * 1000 * 1.1, util.out("side_view.dat"), util.out("profile.dat"), util.out("profile.dat"),
+     R_bottom * 1000, R_top * 1000, H * 1000, R_top * 1000, H * 1000, R_bottom * 1000))
+  local hist = {}
+  for k, h in ipairs(history) do hist[k] = {h.t, h.slump_mm, h.cone_bottom_mm or 0} end
+  util.write_columns("slump_history.dat", "t_s slump_mm cone_bottom_mm", hist)
+  pictures.slump_history = util.gnuplot("slump_history", string.format([[
+set title 'Slump against time (t = 0: start of the lift)'
+set xlabel 't [s]'; set ylabel '[mm]'; set grid; set key bottom right
+%s
+plot '%s' using 1:2 with linespoints pt 7 ps 0.5 title 'slump', \
+     '%s' using 1:3 with lines dt 2 title 'cone bottom above the plate'%s]],
+    lift_stop and string.format("set arrow from %g, graph 0 to %g, graph 1 nohead lc rgb 'gray'", lift_stop - t_lift, lift_stop - t_lift) or "",
+    util.out("slump_history.dat"), util.out("slump_history.dat"),
+    string.format(", %g with lines lc rgb 'red' title 'measured 231 mm'", 231)))
+end
+
+local reference_params = {}
+for _, e in ipairs(mud.contact) do reference_params[e.name] = P[e.name] end
+paddy.result{
+  slump_mm = final.slump * 1000,
+  slump_flow_mm = flow.diameter_fit * 1000,          -- image + circle fit (as the reference study)
+  slump_flow_ruler_mm = flow.ruler.mean * 1000,      -- two perpendicular diameters (GB/T 50080)
+  slump_flow_ruler = {d1_mm = flow.ruler.d1 * 1000, d2_mm = flow.ruler.d2 * 1000, angle_deg = math.deg(flow.ruler.angle)},
+  slump_flow_area_mm = flow.diameter_area * 1000,    -- area-equivalent diameter
+  slump_flow_circle = {x_mm = flow.circle.x * 1000, y_mm = flow.circle.y * 1000, rms_mm = flow.circle.rms * 1000},
+  pile_height_mm = final.pile_height * 1000,
+  pile_particles = final.cluster, loose_particles = final.ignored,
+  initial_slump_mm = initial.slump * 1000,
+  profile = profile_out,
+  history = history,
+  measured = {slump_mm = 231, slump_flow_mm = 480},
+  at_rest = at_rest,
+  rest_time_s = rest_time,
+  rest_criterion = rest_criterion,
+  lift_stop_s = lift_stop and lift_stop - t_lift or nil,
+  cone_lift_mm = cone and P.lift_speed * ((lift_stop or sim:time()) - t_lift) * 1000 or 0,
+  settle_time_s = settle_time,
+  particles = particles, filled = filled, struck_off = struck, fill_solid_fraction = solid_fraction,
+  time_step = dt,
+  simulated_time_s = sim:time(),
+  wall_time_s = os.difftime(os.time(), wall_start),
+  coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
+                     reference_params = reference_params, scaled_params = cg.params, changed = cg.changed,
+                     rows = cg.rows, reference_particle_estimate = particles * cg.alpha ^ 3},
+  pictures = pictures,
+}

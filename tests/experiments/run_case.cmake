@@ -1,0 +1,146 @@
+# End-to-end cases of the Lua experiments (CTest experiments.<case>, see CMakeLists.txt):
+#   cmake -DPADDY=<exe> -DCASE=<name> -DSOURCE=<source tree> -DHERE=<this dir> -DWORK=<dir> -P run_case.cmake
+# Each case runs the built executable in a fresh work directory and checks the exit code and
+# result.json (string(JSON), numbers compared with math(EXPR) on integers or with regexes).
+cmake_minimum_required(VERSION 3.20)
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+
+function(run_paddy out_code out_stderr)
+  string(TIMESTAMP t0 "%s")
+  execute_process(COMMAND ${PADDY} ${ARGN} WORKING_DIRECTORY ${WORK}
+                  RESULT_VARIABLE code OUTPUT_VARIABLE so ERROR_VARIABLE se)
+  string(TIMESTAMP t1 "%s")
+  math(EXPR secs "${t1} - ${t0}")
+  message(STATUS "paddy ${ARGN} -> ${code} in ${secs} s\n--- stdout:\n${so}\n--- stderr:\n${se}")
+  set(${out_code} ${code} PARENT_SCOPE)
+  set(${out_stderr} "${se}" PARENT_SCOPE)
+endfunction()
+
+function(expect_code actual expected)
+  if(NOT "${actual}" STREQUAL "${expected}")
+    message(FATAL_ERROR "exit code ${actual}, expected ${expected}")
+  endif()
+endfunction()
+
+# Reads results.<path...> of result.json into `var` (fatal if missing).
+function(result var)
+  file(READ ${WORK}/out/result.json doc)
+  string(JSON value ERROR_VARIABLE err GET "${doc}" results ${ARGN})
+  if(err)
+    message(FATAL_ERROR "result.json: results ${ARGN}: ${err}")
+  endif()
+  set(${var} "${value}" PARENT_SCOPE)
+endfunction()
+
+# Compares a floating-point number with a bound: expect_number(<value> GREATER|LESS <bound> <what>).
+# Length of the array results.<path...> into `var`.
+function(result_length var)
+  file(READ ${WORK}/out/result.json doc)
+  string(JSON value ERROR_VARIABLE err LENGTH "${doc}" results ${ARGN})
+  if(err)
+    message(FATAL_ERROR "result.json: results ${ARGN}: ${err}")
+  endif()
+  set(${var} "${value}" PARENT_SCOPE)
+endfunction()
+
+function(expect_number value op bound what)
+  if(NOT value MATCHES "^-?[0-9.]+([eE][-+]?[0-9]+)?$")
+    message(FATAL_ERROR "${what} = '${value}' is not a finite number")
+  endif()
+  # CMake compares decimal strings as numbers (floating point) in if(... GREATER ...).
+  if(NOT (value ${op} bound))
+    message(FATAL_ERROR "${what} = ${value}, expected ${op} ${bound}")
+  endif()
+  message(STATUS "ok: ${what} = ${value} (${op} ${bound})")
+endfunction()
+
+function(expect_file path)
+  if(NOT EXISTS ${path})
+    message(FATAL_ERROR "missing output file ${path}")
+  endif()
+endfunction()
+
+if(CASE STREQUAL "measure_binding")
+  run_paddy(code se run ${HERE}/measure_binding.lua --out out --threads 1)
+  expect_code(${code} 0)
+  result(ok ok)
+  expect_file(${WORK}/out/pics/top.png)
+  expect_file(${WORK}/out/pics/top.pgm)
+
+elseif(CASE STREQUAL "measure_errors")
+  # Bad input to a binding is an input error (exit 2) at the script's line.
+  file(WRITE ${WORK}/bad.lua [=[
+local sim = paddy.simulation{threads = 1}
+local m = sim:material{name = "mud", density = 1680, shear_modulus = 1e6, poisson = 0.5}
+sim:add_particle{pos = {0, 0, 0.001}, radius = 0.001, material = m}
+local ok = pcall(sim.measure_slump, sim, {cone_height = 0.3, quantile = 2})
+assert(not ok, "quantile 2 accepted")
+sim:measure_slump_flow{pixels = 0.001}
+]=])
+  run_paddy(code se run bad.lua --out out)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "bad\\.lua:6:.*unknown option 'pixels'.*pixel")
+    message(FATAL_ERROR "the error does not name bad.lua:6 and the option")
+  endif()
+  file(WRITE ${WORK}/hb.lua "local m = require('paddy.measure')\nm.herschel_bulkley{shear_rate = {1, 2}, stress = {1, 2}}\n")
+  run_paddy(code se run hb.lua --out out2)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "hb\\.lua:2:")
+    message(FATAL_ERROR "the HB error does not name hb.lua:2")
+  endif()
+
+elseif(CASE STREQUAL "slump_mini")
+  # ~600 spheres of 22 mm (α = 11). Assertions a broken experiment fails:
+  #  - slump > 20 mm: a cone that is not lifted, or a pile measured before it moved, gives ~0;
+  #  - slump < 300 mm: some pile is left (the measure found the pile, not the plate);
+  #  - slump-flow > 222 mm = the cone's bottom diameter + one particle: the footprint of mud
+  #    still inside the cone is at most 200 mm, so more means the pile spread out;
+  #  - all particles are still there, the history has samples and the pictures exist.
+  run_paddy(code se run ${SOURCE}/experiments/slump.lua --out out --threads 1 --seed 3
+            --set particle_diameter=0.022 --set settle_max_time=0.4 --set min_rest_time=0.2
+            --set max_time=4 --set history_interval=0.05 --set snapshot_interval=1 --set rest_speed=0.01)
+  expect_code(${code} 0)
+  result(slump slump_mm)
+  result(flow slump_flow_mm)
+  result(ruler slump_flow_ruler_mm)
+  result(n particles)
+  result_length(nh history)
+  expect_number(${slump} GREATER 20 "slump_mm")
+  expect_number(${slump} LESS 300 "slump_mm")
+  expect_number(${flow} GREATER 222 "slump_flow_mm")
+  expect_number(${ruler} GREATER 222 "slump_flow_ruler_mm")
+  expect_number(${n} GREATER 300 "particles")
+  expect_number(${nh} GREATER 5 "history samples")
+  result(alpha coarse_graining alpha)
+  expect_number(${alpha} GREATER 10.9 "alpha")
+  result(gamma coarse_graining scaled_params jkr_surface_energy)
+  expect_number(${gamma} GREATER 1.05 "scaled surface energy")
+  foreach(f slump_flow_top.png slump_flow_top.pgm side_view.png slump_history.png snapshots/particles.xmf)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+
+elseif(CASE STREQUAL "rheometer_mini")
+  # ~600 spheres of 12 mm in the cup; three speeds, short steps. The vane must feel a resisting
+  # torque at every speed and the Herschel-Bulkley fit must give finite parameters.
+  run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
+            --set particle_diameter=0.012 --set speeds_rpm=20,40,80 --set step_time=0.15
+            --set settle_max_time=0.3 --set min_rest_time=0.1 --set sample_interval=0.005
+            --set snapshot_interval=0)
+  expect_code(${code} 0)
+  foreach(k 0 1 2)
+    result(t steps ${k} torque_Nm)
+    expect_number(${t} GREATER 0 "steady torque of step ${k}")
+  endforeach()
+  result(tau0 herschel_bulkley tau0)
+  result(K herschel_bulkley K)
+  result(n herschel_bulkley n)
+  expect_number(${tau0} GREATER -1e-12 "HB tau0")
+  expect_number(${K} GREATER 0 "HB K")
+  expect_number(${n} GREATER 0 "HB n")
+  expect_file(${WORK}/out/torque.png)
+  expect_file(${WORK}/out/vane_loads.csv)
+
+else()
+  message(FATAL_ERROR "unknown case ${CASE}")
+endif()
