@@ -5,16 +5,23 @@
 
 using namespace paddy;
 
-TEST_CASE("without damping a cohesive collision conserves energy", "[physics][energy]") {
-  Simulation sim(test::shippedPlugins());
-  const int mud = sim.addMaterial(test::mudMaterial());
+namespace {
+// Two mud spheres under JKR + Hertz-Mindlin damping + Mindlin, without gravity.
+void mudPairLaw(Simulation& sim, int mud, double e, double mu, double gamma) {
   InteractionSpec spec;
   spec.normal = "jkr";
   spec.damping = "hertz_mindlin";
   spec.tangential = "mindlin";
-  spec.params = {{"restitution", 1.0}, {"friction", 0.0}, {"surface_energy", 0.02}};
+  spec.params = {{"restitution", e}, {"friction", mu}, {"surface_energy", gamma}};
   sim.setInteraction(mud, mud, spec);
   sim.setGravity(Vec3::Zero());
+}
+}  // namespace
+
+TEST_CASE("without damping a cohesive collision conserves energy", "[physics][energy]") {
+  Simulation sim(test::shippedPlugins());
+  const int mud = sim.addMaterial(test::mudMaterial());
+  mudPairLaw(sim, mud, 1.0, 0.0, 0.02);
   sim.setTimeStepFraction(0.01);
   const double R = 1e-3, v = 0.5;
   // Offset the line of centres slightly so the collision is oblique.
@@ -37,13 +44,7 @@ TEST_CASE("without damping a cohesive collision conserves energy", "[physics][en
 TEST_CASE("a slow cohesive collision sticks", "[physics][jkr]") {
   Simulation sim(test::shippedPlugins());
   const int mud = sim.addMaterial(test::mudMaterial());
-  InteractionSpec spec;
-  spec.normal = "jkr";
-  spec.damping = "hertz_mindlin";
-  spec.tangential = "mindlin";
-  spec.params = {{"restitution", 0.13}, {"friction", 0.15}, {"surface_energy", 0.096}};
-  sim.setInteraction(mud, mud, spec);
-  sim.setGravity(Vec3::Zero());
+  mudPairLaw(sim, mud, 0.13, 0.15, 0.096);
   sim.addParticle(Vec3(-1.1e-3, 0, 0), 1e-3, mud, Vec3(0.05, 0, 0));
   sim.addParticle(Vec3(1.1e-3, 0, 0), 1e-3, mud, Vec3(-0.05, 0, 0));
   sim.run(0.05);

@@ -23,7 +23,7 @@ void PlaneWall::findContacts(const ParticleView& p, double max_gap, std::vector<
     if (i >= p.n) continue;
     const double dist = (p.position[i] - o).dot(normal_);
     const double overlap = p.radius[i] - dist;
-    if (overlap <= -max_gap && !(overlap > 0.0)) continue;
+    if (overlap <= -max_gap) continue;
     out.push_back({i, 0u, overlap, normal_, p.position[i] - dist * normal_});
   }
 }
