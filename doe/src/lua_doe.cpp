@@ -5,6 +5,8 @@
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/factorial.hpp"
 #include "paddy/doe/plackett_burman.hpp"
+#include "paddy/doe/plots.hpp"
+#include "paddy/doe/surrogate_calibration.hpp"
 #include "paddy/doe/report_json.hpp"
 
 #include <cmath>
@@ -187,7 +189,10 @@ json analyze(const json& o) {
     t.cells.push_back(cells);
     t.lines.push_back(row);
   }
-  return analysisToJson(analyzeTable(t, req));
+  const Analysis a = analyzeTable(t, req);
+  json out = analysisToJson(a);
+  if (o.contains("plots")) out["plots"] = plotAnalysis(o["plots"].get<std::string>(), a);
+  return out;
 }
 
 json optimize(const json& o) {
@@ -231,7 +236,77 @@ json optimize(const json& o) {
     opt.lowerCoded(j) = fit.factors[j].toCoded(lo);
     opt.upperCoded(j) = fit.factors[j].toCoded(hi);
   }
-  return solutionsToJson(fit, goals, optimizeDesirability(fit.factors, fit.responses, goals, opt));
+  json out = solutionsToJson(fit, goals, optimizeDesirability(fit.factors, fit.responses, goals, opt));
+  if (o.contains("plots")) out["plots"] = plotDesirabilityRamps(o["plots"].get<std::string>(), goals);
+  return out;
+}
+
+// surrogate_suggest{factors = {{name =, low =, high =}, ...}, data = {rows}, responses = {...},
+//                   targets = {resp = value}, batch =, seed =, samples =, candidates =}
+json surrogate(const json& o) {
+  std::vector<Factor> f;
+  for (const auto& x : o.value("factors", json::array())) {
+    Factor fx{x.value("name", ""), number(x.value("low", json()), "factors[].low"), number(x.value("high", json()), "factors[].high")};
+    if (fx.name.empty()) throw DoeError("every factor needs a name");
+    if (!(fx.high > fx.low)) throw DoeError("factor '" + fx.name + "': high must be greater than low");
+    f.push_back(fx);
+  }
+  if (f.empty()) throw DoeError("factors = {{name =, low =, high =}, ...} is required");
+  const auto responses = strings(o.value("responses", json::array()), "responses");
+  if (responses.empty()) throw DoeError("responses = {...} is required");
+  if (!o.contains("targets") || !o["targets"].is_object()) throw DoeError("targets = {response = value} is required");
+  Eigen::VectorXd targets(static_cast<Eigen::Index>(responses.size()));
+  for (std::size_t r = 0; r < responses.size(); ++r) {
+    if (!o["targets"].contains(responses[r])) throw DoeError("targets: no value for response '" + responses[r] + "'");
+    targets(static_cast<Eigen::Index>(r)) = number(o["targets"][responses[r]], "targets." + responses[r]);
+  }
+  if (!o.contains("data") || !o["data"].is_array()) throw DoeError("data must be an array of rows");
+  const auto& data = o["data"];
+  Eigen::MatrixXd X(static_cast<Eigen::Index>(data.size()), static_cast<Eigen::Index>(f.size()));
+  Eigen::MatrixXd Y(static_cast<Eigen::Index>(data.size()), static_cast<Eigen::Index>(responses.size()));
+  for (std::size_t i = 0; i < data.size(); ++i) {
+    const std::string where = "data row " + std::to_string(i + 1);
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      if (!data[i].contains(f[j].name)) throw DoeError(where + ": missing value for '" + f[j].name + "'");
+      const double x = number(data[i][f[j].name], where + ", " + f[j].name);
+      X(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (x - f[j].low) / (f[j].high - f[j].low);
+    }
+    for (std::size_t r = 0; r < responses.size(); ++r) {
+      if (!data[i].contains(responses[r])) throw DoeError(where + ": missing value for '" + responses[r] + "'");
+      Y(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(r)) = number(data[i][responses[r]], where + ", " + responses[r]);
+    }
+  }
+  SurrogateOptions so;
+  so.batch = o.value("batch", 1);
+  so.samples = o.value("samples", so.samples);
+  so.candidates = o.value("candidates", so.candidates);
+  so.seed = o.value("seed", 1ULL);
+  so.gp.seed = so.seed;
+  const SurrogateStep step = suggestCalibrationPoints(X, Y, targets, so);
+  json out;
+  out["incumbent_error"] = step.incumbent_error;
+  out["incumbent_index"] = step.incumbent_index + 1;
+  out["suggestions"] = json::array();
+  for (const auto& s : step.suggestions) {
+    json js;
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      const double u = s.x(static_cast<Eigen::Index>(j));
+      js["factors"][f[j].name] = f[j].low + u * (f[j].high - f[j].low);
+      js["unit"][f[j].name] = u;
+    }
+    for (std::size_t r = 0; r < responses.size(); ++r)
+      js["predicted"][responses[r]] = {{"mean", s.predicted[r].mean}, {"sd", s.predicted[r].sd()}};
+    js["expected_improvement"] = s.expected_improvement;
+    js["predicted_error"] = s.predicted_error;
+    out["suggestions"].push_back(js);
+  }
+  for (std::size_t r = 0; r < responses.size(); ++r) {
+    const auto& h = step.hyperparameters[r];
+    json jh{{"signal_variance", h.signal_variance}, {"noise_variance", h.noise_variance}};
+    for (std::size_t j = 0; j < f.size(); ++j) jh["length_scales"][f[j].name] = h.length_scales(static_cast<Eigen::Index>(j));
+    out["hyperparameters"][responses[r]] = jh;
+  }
+  return out;
 }
 
 json steepest(const json& o) {
@@ -283,6 +358,7 @@ int lDesign(lua_State* L) { return wrap<design>(L, "design"); }
 int lAnalyze(lua_State* L) { return wrap<analyze>(L, "analyze"); }
 int lOptimize(lua_State* L) { return wrap<optimize>(L, "optimize"); }
 int lSteepest(lua_State* L) { return wrap<steepest>(L, "steepest_ascent"); }
+int lSurrogate(lua_State* L) { return wrap<surrogate>(L, "surrogate_suggest"); }
 
 }  // namespace
 }  // namespace paddy::doe
@@ -292,6 +368,7 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"analyze", paddy::doe::lAnalyze},
                                  {"optimize", paddy::doe::lOptimize},
                                  {"steepest_ascent", paddy::doe::lSteepest},
+                                 {"surrogate_suggest", paddy::doe::lSurrogate},
                                  {nullptr, nullptr}};
   luaL_newlib(L, fns);
   return 1;
