@@ -141,6 +141,60 @@ elseif(CASE STREQUAL "rheometer_mini")
   expect_file(${WORK}/out/torque.png)
   expect_file(${WORK}/out/vane_loads.csv)
 
+elseif(CASE STREQUAL "validation_pb")
+  # The Plackett-Burman validation campaign on 13 tiny slump runs (52 spheres of 40 mm, the column
+  # released without a cone, 0.3 s): every run finishes, both fits (EDEM from Table 4 and Paddy)
+  # exist, the EDEM fit reproduces the reference's Table 5 (H5 slump-flow coefficient -58.00,
+  # p < 0.0001), the files exist, and a second invocation resumes without running a job again.
+  set(tiny "cone=none,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false")
+  set(args run ${SOURCE}/experiments/validation/plackett_burman.lua --out out --threads 1
+      --set particle_diameter=0.04 --set max_parallel=2 --set threads_per_job=1
+      --set reference_dir=${SOURCE}/../shared/reference --set slump_set=${tiny})
+  run_paddy(code se ${args})
+  expect_code(${code} 0)
+  result(n finished)
+  expect_number(${n} GREATER 12.5 "finished runs")
+  result(b effects slump_flow_mm H5 edem coefficient)
+  expect_number(${b} LESS -57.99 "EDEM slump-flow H5 coefficient")
+  expect_number(${b} GREATER -58.01 "EDEM slump-flow H5 coefficient")
+  result(p effects slump_flow_mm H5 edem p)
+  expect_number(${p} LESS 0.0001 "EDEM slump-flow H5 p")
+  result(r2 fit paddy slump_mm r2)
+  expect_number(${r2} GREATER 0 "Paddy slump R2")
+  result(bp effects slump_mm H7 paddy coefficient)
+  expect_number(${bp} GREATER -1000 "Paddy slump H7 coefficient")
+  foreach(f pb_runs.csv pb_effects.csv pb_validation.json pb_runs.png pb_effects.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  file(STRINGS ${WORK}/out/pb_runs.csv lines)
+  list(LENGTH lines nl)
+  expect_number(${nl} GREATER 13.5 "lines of pb_runs.csv")
+  run_paddy(code se ${args})
+  expect_code(${code} 0)
+  if(NOT se MATCHES "13 job\\(s\\) already done")
+    message(FATAL_ERROR "the second invocation did not resume from the finished jobs")
+  endif()
+
+elseif(CASE STREQUAL "validation_cg")
+  # The coarse-graining campaign on 2 sizes x 2 seeds of tiny released columns: per-size mean and
+  # std, the tests and the pictures.
+  run_paddy(code se run ${SOURCE}/experiments/validation/coarse_graining.lua --out out --threads 1
+            --set diameters=0.03,0.04 --set seeds=1,2 --set max_parallel=2 --set threads_per_job=1
+            --set slump_set=cone=none,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false)
+  expect_code(${code} 0)
+  result(n finished)
+  expect_number(${n} GREATER 3.5 "finished runs")
+  result(m summary 0 slump_mm mean)
+  expect_number(${m} GREATER 20 "mean slump at 30 mm")
+  result(sd summary 1 slump_flow_mm std)
+  expect_number(${sd} GREATER 0 "std of the slump-flow at 40 mm (two seeds differ)")
+  result(p tests slump_flow_mm anova p)
+  expect_number(${p} GREATER 0 "ANOVA p")
+  expect_number(${p} LESS 1.000001 "ANOVA p")
+  foreach(f cg_runs.csv cg_summary.csv cg_tests.csv cg_study.json cg_sizes.png cg_profiles.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+
 else()
   message(FATAL_ERROR "unknown case ${CASE}")
 endif()
