@@ -12,6 +12,7 @@ packages=(
   libnlopt-cxx-dev libnlopt-dev
   libssl-dev
   gnuplot-nox
+  libxml2-utils
 )
 # Optional: comparison codes for bench/ (not needed to build or test).
 if [ "${PADDY_BENCH_DEPS:-0}" = "1" ]; then

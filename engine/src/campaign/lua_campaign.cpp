@@ -46,37 +46,6 @@ CampaignHandle& checkCampaign(lua_State* L, int idx) {
   return *h;
 }
 
-void pushJson(lua_State* L, const json& v, int depth = 0) {
-  if (depth > 100) throw InputError("campaign: result nested too deeply");
-  luaL_checkstack(L, 4, "campaign result");
-  switch (v.type()) {
-    case json::value_t::null: lua_pushnil(L); break;
-    case json::value_t::boolean: lua_pushboolean(L, v.get<bool>()); break;
-    case json::value_t::number_integer: lua_pushinteger(L, v.get<lua_Integer>()); break;
-    case json::value_t::number_unsigned: lua_pushinteger(L, static_cast<lua_Integer>(v.get<std::uint64_t>())); break;
-    case json::value_t::number_float: lua_pushnumber(L, v.get<double>()); break;
-    case json::value_t::string: lua_pushstring(L, v.get_ref<const std::string&>().c_str()); break;
-    case json::value_t::array: {
-      lua_createtable(L, static_cast<int>(v.size()), 0);
-      lua_Integer i = 1;
-      for (const auto& e : v) {
-        pushJson(L, e, depth + 1);
-        lua_rawseti(L, -2, i++);
-      }
-      break;
-    }
-    case json::value_t::object: {
-      lua_createtable(L, 0, static_cast<int>(v.size()));
-      for (const auto& [k, e] : v.items()) {
-        pushJson(L, e, depth + 1);
-        lua_setfield(L, -2, k.c_str());
-      }
-      break;
-    }
-    default: lua_pushnil(L); break;
-  }
-}
-
 // Directories of package.path's "<dir>/?.lua" entries: where require() finds modules.
 std::vector<fs::path> luaModuleDirs(lua_State* L) {
   std::vector<fs::path> dirs;

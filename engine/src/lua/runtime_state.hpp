@@ -69,5 +69,7 @@ nlohmann::json parameterValues(const RuntimeState& state);
 void registerSimulationType(lua_State* L);
 // Lua value → JSON (result.cpp). Tables with keys 1..n become arrays, others objects.
 nlohmann::json toJson(lua_State* L, int idx, int depth = 0);
+// JSON → Lua value on the stack (lua_json.cpp): objects → tables, arrays → sequences, null → nil.
+void pushJson(lua_State* L, const nlohmann::json& value, int depth = 0);
 
 }  // namespace paddy::lua
