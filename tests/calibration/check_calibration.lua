@@ -5,6 +5,7 @@
 local P = paddy.parameters{
   {name = "dir", default = "", description = "output directory of the calibration"},
   {name = "same_as", default = "", description = "another calibration's result.json that must agree exactly"},
+  {name = "same_reference_as", default = "", description = "a result.json whose reference procedure must agree exactly (e.g. local vs Slurm)"},
   {name = "strategy", default = "both", choices = {"reference", "surrogate", "both"}, description = "strategy that was run"},
 }
 local function check(cond, fmt, ...)
@@ -74,9 +75,7 @@ if P.strategy ~= "reference" then
   end
 end
 
-if P.same_as ~= "" then
-  local other = paddy.read_json(P.same_as).results
-  local function same(a, b, path)
+local function same(a, b, path)
     check(type(a) == type(b), "%s: %s vs %s", path, type(a), type(b))
     if type(a) == "table" then
       for k, v in pairs(a) do same(v, b[k], path .. "." .. k) end
@@ -84,7 +83,9 @@ if P.same_as ~= "" then
     elseif path ~= ".wall_time_s" and not path:match("report$") and not path:match("json$") and not path:match("csv%.%d+$") then
       check(a == b, "%s: %s vs %s", path, tostring(a), tostring(b))
     end
-  end
-  same(r, other, "")
+end
+if P.same_as ~= "" then same(r, paddy.read_json(P.same_as).results, "") end
+if P.same_reference_as ~= "" then
+  same(r.reference, paddy.read_json(P.same_reference_as).results.reference, ".reference")
 end
 paddy.result{ok = true}
