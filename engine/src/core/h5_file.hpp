@@ -1,5 +1,7 @@
-// Minimal RAII wrapper over the HDF5 C API for the engine's own files (checkpoints): 1-D or
-// N×k datasets of doubles and integers addressed by "group/name", and scalar attributes.
+// Minimal RAII wrapper over the HDF5 C API for the engine's own files (checkpoints, wall load
+// histories): 1-D or N×k datasets of doubles and integers addressed by "group/name" (groups are
+// created on the way), and scalar attributes (numbers, variable-length UTF-8 strings) on the
+// root or on any group or dataset.
 #pragma once
 
 #include <hdf5.h>
@@ -46,7 +48,9 @@ class File {
     const hsize_t dims[2] = {static_cast<hsize_t>(data.size() / columns), columns};
     hid_t space = H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr);
     hid_t set = H5Dcreate2(id_, name.c_str(), nativeType<T>(), space, lcpl, H5P_DEFAULT, H5P_DEFAULT);
-    herr_t st = set >= 0 ? H5Dwrite(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) : -1;
+    herr_t st = set < 0 ? -1
+                : data.empty() ? 0
+                               : H5Dwrite(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
     if (set >= 0) H5Dclose(set);
     H5Sclose(space);
     H5Pclose(lcpl);
@@ -74,6 +78,26 @@ class File {
     H5Aclose(attr);
     H5Sclose(space);
   }
+  // Scalar attribute `name` on the group or dataset at `object` ("/" = the root).
+  void writeAttr(const std::string& object, const std::string& name, double value) {
+    writeObjectAttr(object, name, H5T_NATIVE_DOUBLE, &value);
+  }
+  void writeAttr(const std::string& object, const std::string& name, std::uint64_t value) {
+    writeObjectAttr(object, name, H5T_NATIVE_UINT64, &value);
+  }
+  void writeAttr(const std::string& object, const std::string& name, const std::string& value) {
+    hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    const char* text = value.c_str();
+    try {
+      writeObjectAttr(object, name, type, &text);
+    } catch (...) {
+      H5Tclose(type);
+      throw;
+    }
+    H5Tclose(type);
+  }
   double readAttr(const std::string& name) const {
     hid_t attr = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
     if (attr < 0) throw InputError("HDF5 file '" + path_ + "' has no attribute '" + name + "'");
@@ -85,6 +109,17 @@ class File {
 
  private:
   File(hid_t id, std::string path) : id_(id), path_(std::move(path)) {}
+  void writeObjectAttr(const std::string& object, const std::string& name, hid_t type, const void* value) {
+    hid_t obj = H5Oopen(id_, object.c_str(), H5P_DEFAULT);
+    if (obj < 0) throw InputError("HDF5 file '" + path_ + "' has no object '" + object + "'");
+    hid_t space = H5Screate(H5S_SCALAR);
+    hid_t attr = H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
+    const herr_t st = attr >= 0 ? H5Awrite(attr, type, value) : -1;
+    if (attr >= 0) H5Aclose(attr);
+    H5Sclose(space);
+    H5Oclose(obj);
+    if (st < 0) throw InputError("cannot write attribute '" + name + "' of '" + object + "' to '" + path_ + "'");
+  }
   hid_t id_ = -1;
   std::string path_;
 };

@@ -1,24 +1,28 @@
-// Mesh walls from Lua: parts and mesh files as moving walls, their motion and their loads.
+// Mesh walls from Lua: parts and mesh files as moving walls, and their motion. Their loads are
+// in lua_wall_loads.cpp.
 //
 //   sim:add_mesh_wall{name=, material=, part="slump_cone", params={...}  or  file="x.stl",
 //                     scale=1, rotate={axis={0,0,1}, angle=deg}, translate={x,y,z}, motion={...}}
 //                                                        → wall index (as sim:add_wall)
-//   sim:set_motion(w, motion)        replaces the motion (start defaults to the current time)
-//   sim:wall_force(w) → {fx,fy,fz}   sim:wall_torque(w) → {tx,ty,tz} (about the torque origin)
-//   sim:wall_axial_torque(w)         sim:wall_position(w) → translation offset {x,y,z}
-//   sim:record_wall_loads([w])       appends a load sample (all mesh walls without w)
-//   sim:write_wall_loads(w, "f.csv") → path (atomic; relative paths inside paddy.out_dir)
+//   sim:set_motion(w, motion)        from now on follow `motion`, starting from the current pose
+//                                    (start defaults to the current time)
+//   sim:wall_pose(w) → {origin={x,y,z}, rotation={{..},{..},{..}}, distance=, angle=}
 //   paddy.parts()                    → {{name=, description=, params={{name=, default=, ...}}}}
 //
 // Motion tables: {type="fixed"}, {type="translate", velocity={..} | direction={..} schedule=...,
 // start=, stop=}, {type="rotate", point=, axis=, speed=rad/s | rpm= | schedule={{t,ω},...},
 // start=, stop=}. Schedules are piecewise linear in absolute time (two knots at one time: a step).
+// set_motion re-bases the wall (geometry::Motion::change): the new motion moves it from the pose
+// it has now, exactly (closed forms, no time-stepping error), and distance and angle keep
+// accumulating. "fixed" keeps the torque origin and axis, so a stopped vane still reports its
+// axial torque.
 // The mesh file is read by the reader a plugin registered for its extension (the engine does
 // not link CGAL); scale and placement are applied here, identically for parts and files.
 #include "lua/lua_util.hpp"
 #include "lua/registry.hpp"
 #include "lua/runtime_state.hpp"
 #include "lua/sim_handle.hpp"
+#include "lua/wall_args.hpp"
 
 #include <paddy/errors.hpp>
 #include <paddy/geometry.hpp>
@@ -42,33 +46,6 @@ using geometry::SpeedSchedule;
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void pushVec3(lua_State* L, const Vec3& v) { pushNumberArray(L, {v.x(), v.y(), v.z()}); }
-
-// Wall argument: the index returned by sim:add_wall / sim:add_mesh_wall, or the wall's name.
-int wallArg(lua_State* L, SimHandle& h, int idx, const std::string& fn) {
-  const int n = static_cast<int>(h.sim->wallCount());
-  if (lua_type(L, idx) == LUA_TSTRING) {
-    const std::string name = lua_tostring(L, idx);
-    for (int w = 0; w < n; ++w)
-      if (h.sim->wall(w).name() == name) return w;
-    throw InputError(fn + ": no wall named '" + name + "'");
-  }
-  const double x = toNumber(L, idx, fn + ": wall");
-  if (x != std::floor(x) || x < 0 || x >= n) {
-    std::ostringstream m;
-    m << fn << ": wall " << x << " does not exist (" << n << " walls";
-    if (n > 0) m << ", indices 0.." << n - 1 << " or their names";
-    m << ")";
-    throw InputError(m.str());
-  }
-  return static_cast<int>(x);
-}
-
-MeshWall& meshWallArg(lua_State* L, SimHandle& h, int idx, const std::string& fn) {
-  Wall& w = h.sim->wall(wallArg(L, h, idx, fn));
-  auto* m = dynamic_cast<MeshWall*>(&w);
-  if (!m) throw InputError(fn + ": wall '" + w.name() + "' is not a mesh wall (sim:add_mesh_wall)");
-  return *m;
-}
 
 // {{t0, v0}, {t1, v1}, ...} → SpeedSchedule (times non-decreasing, checked by SpeedSchedule).
 SpeedSchedule readSchedule(lua_State* L, int idx, const std::string& what, double factor) {
@@ -101,9 +78,10 @@ SpeedSchedule readSchedule(lua_State* L, int idx, const std::string& what, doubl
 // A motion table (see the header comment). `default_point` is the rotation axis point when none
 // is given (the wall's placement), `default_start` the start time.
 Kinematics readMotion(lua_State* L, int idx, const std::string& ctx, const Vec3& default_point,
-                      double default_start) {
+                      double default_start, bool* fixed = nullptr) {
   OptionTable opt(L, idx, ctx);
   const std::string type = opt.string("type");
+  if (fixed) *fixed = type == "fixed";
   Kinematics k;
   if (type == "fixed") {
     opt.finish();
@@ -142,12 +120,6 @@ Kinematics readMotion(lua_State* L, int idx, const std::string& ctx, const Vec3&
   opt.finish();
   k.validate();
   return k;
-}
-
-bool hasMoved(const MeshWall& w) {
-  const double scale = 1.0 + w.placement().x.norm();
-  return (w.pose().x - w.placement().x).norm() > 1e-12 * scale ||
-         (w.pose().R - w.placement().R).norm() > 1e-12;
 }
 
 // Part parameters: defaults of the ParamSpecs, overridden by `params`, checked against the ranges.
@@ -249,71 +221,36 @@ int setMotion(lua_State* L) {
   MeshWall& w = meshWallArg(L, h, 2, "sim:set_motion");
   const double now = h.sim->time();
   const std::string ctx = "sim:set_motion '" + w.name() + "'";
-  Kinematics k = readMotion(L, 3, ctx, w.placement().x, now);
-  const bool fixed = k.speed.knots().empty() && k.angular_speed.knots().empty() && std::isinf(k.t_end) && k.t_start == 0.0;
-  if (hasMoved(w)) {
-    if (fixed) {
-      // Stop where it is: the old motion, ended now.
-      k = w.kinematics();
-      k.t_end = std::max(k.t_start, std::min(k.t_end, now));
-    } else {
-      throw InputError(ctx + ": the wall has moved since it was placed; a new motion would start again from "
-                       "its placement and make it jump. Give the whole motion at once (a schedule), or "
-                       "call set_motion before the wall moves ({type=\"fixed\"} stops it where it is)");
-    }
+  // The rotation point defaults to where the wall's origin is now.
+  bool fixed = false;
+  Kinematics k = readMotion(L, 3, ctx, w.pose().x, now, &fixed);
+  if (fixed) {
+    // Stop where it is, keeping the torque origin and axis (axial torque of a stopped vane).
+    k.axis_point = w.torqueOrigin();
+    k.axis = w.axis();
   }
-  w.setKinematics(std::move(k));
+  w.changeKinematics(now, std::move(k));
   return 0;
 }
 
-int wallForce(lua_State* L) {
+// sim:wall_pose(w): body → world (world = rotation · X + origin) and the accumulated motion.
+int wallPose(lua_State* L) {
   SimHandle& h = checkSim(L, 1);
-  pushVec3(L, h.sim->wall(wallArg(L, h, 2, "sim:wall_force")).force());
-  return 1;
-}
-
-int wallTorque(lua_State* L) {
-  SimHandle& h = checkSim(L, 1);
-  pushVec3(L, h.sim->wall(wallArg(L, h, 2, "sim:wall_torque")).torque());
-  return 1;
-}
-
-int wallAxialTorque(lua_State* L) {
-  SimHandle& h = checkSim(L, 1);
-  lua_pushnumber(L, meshWallArg(L, h, 2, "sim:wall_axial_torque").axialTorque());
-  return 1;
-}
-
-int wallPosition(lua_State* L) {
-  SimHandle& h = checkSim(L, 1);
-  const MeshWall& w = meshWallArg(L, h, 2, "sim:wall_position");
-  pushVec3(L, w.kinematics().unitDirection() * w.kinematics().distance(w.time()));
-  return 1;
-}
-
-int recordWallLoads(lua_State* L) {
-  SimHandle& h = checkSim(L, 1);
-  const double t = h.sim->time();
-  if (lua_isnoneornil(L, 2)) {
-    for (std::size_t k = 0; k < h.sim->wallCount(); ++k)
-      if (auto* m = dynamic_cast<MeshWall*>(&h.sim->wall(static_cast<int>(k)))) m->recordLoads(t);
-  } else {
-    meshWallArg(L, h, 2, "sim:record_wall_loads").recordLoads(t);
+  const MeshWall& w = meshWallArg(L, h, 2, "sim:wall_pose");
+  const geometry::Pose& p = w.pose();
+  lua_createtable(L, 0, 4);
+  pushVec3(L, p.x);
+  lua_setfield(L, -2, "origin");
+  lua_createtable(L, 3, 0);
+  for (int r = 0; r < 3; ++r) {
+    pushNumberArray(L, {p.R(r, 0), p.R(r, 1), p.R(r, 2)});
+    lua_rawseti(L, -2, r + 1);
   }
-  return 0;
-}
-
-int writeWallLoads(lua_State* L) {
-  SimHandle& h = checkSim(L, 1);
-  const MeshWall& w = meshWallArg(L, h, 2, "sim:write_wall_loads");
-  fs::path path = toString(L, 3, "sim:write_wall_loads(wall, path): path");
-  if (path.is_relative()) {
-    const fs::path& out = runtimeState(L).out_dir;
-    if (out.empty()) throw InputError("sim:write_wall_loads: no output directory for a relative path");
-    path = out / path;
-  }
-  w.writeLoadHistoryCsv(path.string());
-  lua_pushstring(L, path.string().c_str());
+  lua_setfield(L, -2, "rotation");
+  lua_pushnumber(L, w.distanceTravelled());
+  lua_setfield(L, -2, "distance");
+  lua_pushnumber(L, w.angleTurned());
+  lua_setfield(L, -2, "angle");
   return 1;
 }
 
@@ -358,12 +295,7 @@ int parts(lua_State* L) {
 
 const SimulationMethod reg_add{"add_mesh_wall", &guarded<addMeshWall>};
 const SimulationMethod reg_motion{"set_motion", &guarded<setMotion>};
-const SimulationMethod reg_force{"wall_force", &guarded<wallForce>};
-const SimulationMethod reg_torque{"wall_torque", &guarded<wallTorque>};
-const SimulationMethod reg_axial{"wall_axial_torque", &guarded<wallAxialTorque>};
-const SimulationMethod reg_position{"wall_position", &guarded<wallPosition>};
-const SimulationMethod reg_record{"record_wall_loads", &guarded<recordWallLoads>};
-const SimulationMethod reg_write{"write_wall_loads", &guarded<writeWallLoads>};
+const SimulationMethod reg_pose{"wall_pose", &guarded<wallPose>};
 const ModuleFunction reg_parts{"parts", &guarded<parts>};
 
 }  // namespace

@@ -2,11 +2,18 @@
 // callback, writes snapshots and redraws the progress line.
 //
 //   sim:run{duration = 0.5 | steps = 10000, every = 0.01, callback = function(s) ... end,
-//           snapshot_every = 0.05, progress = true}  → steps taken, stopped_early
+//           snapshot_every = 0.05, record_loads_every = 0.01, record_loads = {w, ...},
+//           progress = true}  → steps taken, stopped_early
+//
+// record_loads_every = T appends a load sample to every mesh wall (or to the walls listed in
+// record_loads) without a callback, at the instants a callback with every = T would run:
+// t0 + k·n·dt (n = round(T/dt) steps, k = 1, 2, ...) and at the end of the run (also when a
+// callback stops it early), once per instant. Order at an instant: snapshot, loads, callback.
 #include "lua/lua_util.hpp"
 #include "lua/registry.hpp"
 #include "lua/runtime_state.hpp"
 #include "lua/sim_handle.hpp"
+#include "lua/wall_args.hpp"
 
 #include <paddy/errors.hpp>
 #include <paddy/io/progress.hpp>
@@ -14,6 +21,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace paddy::lua {
 
@@ -25,8 +35,11 @@ using Clock = std::chrono::steady_clock;
 
 // Steps of length dt in `seconds` (rounded to the nearest step, at least 1).
 std::uint64_t stepsFor(double seconds, double dt, const char* what) {
-  if (!(seconds > 0.0) || !std::isfinite(seconds))
-    throw InputError(std::string("sim:run: ") + what + " must be a positive number of seconds");
+  if (!(seconds > 0.0) || !std::isfinite(seconds)) {
+    std::ostringstream m;
+    m << "sim:run: " << what << " = " << seconds << " s must be a positive number of seconds (> 0, finite)";
+    throw InputError(m.str());
+  }
   return std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(seconds / dt)));
 }
 
@@ -64,20 +77,36 @@ int run(lua_State* L) {
   if (auto e = opt.integer("every_steps", 0)) every = static_cast<std::uint64_t>(std::max<long long>(e, 1));
   if (has_callback && !every) every = total;  // at the end only
   if (auto e = opt.optNumber("snapshot_every")) snap_every = stepsFor(*e, dt, "snapshot_every");
+  std::uint64_t rec_every = 0;
+  if (auto e = opt.optNumber("record_loads_every")) rec_every = stepsFor(*e, dt, "record_loads_every");
+  std::vector<int> recorded;  // wall indices
+  if (opt.push("record_loads") != LUA_TNIL) {
+    if (!rec_every) throw InputError("sim:run: record_loads needs record_loads_every = (seconds > 0)");
+    recorded = meshWallList(L, h, -1, "sim:run: record_loads");
+  } else if (rec_every) {
+    recorded = allMeshWalls(sim);
+    if (recorded.empty())
+      throw InputError("sim:run: record_loads_every: the simulation has no mesh walls to record (sim:add_mesh_wall)");
+  }
+  lua_pop(L, 1);
   const bool progress = opt.boolean("progress", true);
   opt.finish();
+  auto recordLoads = [&] {
+    for (int w : recorded) dynamic_cast<MeshWall&>(sim.wall(w)).recordLoads(sim.time());
+  };
 
   RuntimeState& st = runtimeState(L);
   io::ProgressLine line(total, sim.time(), dt, progress);
   const auto start = Clock::now();
-  std::uint64_t done = 0, chunk = 16;
+  std::uint64_t done = 0, chunk = 16, recorded_at = 0;
   bool stopped = false;
   if (snap_every && !h.snapshots) writeSnapshot(L, h);  // the initial state
   try {
     while (done < total && !stopped) {
       const std::uint64_t next_cb = has_callback ? std::min(total, nextEvent(done, every, total)) : total;
       const std::uint64_t next_snap = snap_every ? std::min(total, nextEvent(done, snap_every, total)) : total;
-      const std::uint64_t target = std::min({next_cb, next_snap, done + chunk});
+      const std::uint64_t next_rec = rec_every ? std::min(total, nextEvent(done, rec_every, total)) : total;
+      const std::uint64_t target = std::min({next_cb, next_snap, next_rec, done + chunk});
       const auto t0 = Clock::now();
       sim.step(target - done);
       const double spent = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -90,8 +119,13 @@ int run(lua_State* L) {
       done = target;
       line.update(done, sim.particles().size());
       if (snap_every && (done == next_snap)) writeSnapshot(L, h);
+      if (rec_every && done == next_rec) {
+        recordLoads();
+        recorded_at = done;
+      }
       if (has_callback && done == next_cb && !callBack(L, cb)) stopped = true;
     }
+    if (rec_every && recorded_at != done) recordLoads();  // stopped early by the callback
   } catch (...) {
     st.stats.run_wall_seconds += std::chrono::duration<double>(Clock::now() - start).count();
     throw;

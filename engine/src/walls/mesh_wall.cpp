@@ -46,21 +46,20 @@ using DisjointSets = paddy::UnionFind<std::uint32_t>;
 MeshWall::MeshWall(std::string name, int material, TriangleMesh body_mesh, const geometry::Pose& placement,
                    geometry::Kinematics kinematics, const MeshWallOptions& options)
     : name_(std::move(name)), material_(material), mesh_(std::move(body_mesh)), opt_(options),
-      placement_(placement), kin_(std::move(kinematics)) {
+      motion_(placement, std::move(kinematics)) {
   geometry::MeshCheckOptions check;
   check.source = "mesh wall '" + name_ + "'";
   geometry::validateMesh(mesh_, check);
-  kin_.validate();
-  if (!placement_.x.allFinite() || !placement_.R.allFinite() ||
-      (placement_.R * placement_.R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-9 ||
-      placement_.R.determinant() < 0.0)
+  if (!placement.x.allFinite() || !placement.R.allFinite() ||
+      (placement.R * placement.R.transpose() - Eigen::Matrix3d::Identity()).norm() > 1e-9 ||
+      placement.R.determinant() < 0.0)
     throw InputError(check.source + ": the placement must be a finite proper rotation and translation");
   checkRange(check.source + " region_angle_deg", opt_.region_angle_deg, 0.0, 90.0, "deg");
   checkRange(check.source + " cluster_angle_deg", opt_.cluster_angle_deg, 0.0, 180.0, "deg");
   checkRange(check.source + " merge_angle_deg", opt_.merge_angle_deg, 0.0, 90.0, "deg");
   buildTopology();
   moveTo(0.0);
-  pose_at_build_ = pose_;
+  pose_at_build_ = state_.pose;
 }
 
 MeshWall::~MeshWall() = default;
@@ -171,43 +170,43 @@ void MeshWall::buildTopology() {
 // ---- kinematics -------------------------------------------------------------------------------
 void MeshWall::moveTo(double t) {
   time_ = t;
-  pose_ = kin_.poseAt(t, placement_);
-  axis_point_ = kin_.axis_point + kin_.unitDirection() * kin_.distance(t);
-  vel_ = kin_.unitDirection() * kin_.speedAt(t);
-  omega_ = kin_.unitAxis() * kin_.angularSpeedAt(t);
+  state_ = motion_.at(t);
 }
 
 void MeshWall::setKinematics(geometry::Kinematics k) {
-  k.validate();
-  kin_ = std::move(k);
+  motion_.reset(std::move(k));
   moveTo(time_);
 }
 
-Vec3 MeshWall::velocityAt(const Vec3& p) const { return vel_ + omega_.cross(p - axis_point_); }
-Vec3 MeshWall::angularVelocity() const { return omega_; }
-Vec3 MeshWall::torqueOrigin() const { return axis_point_; }
-Vec3 MeshWall::axis() const { return kin_.unitAxis(); }
+void MeshWall::changeKinematics(double t_switch, geometry::Kinematics k) {
+  motion_.change(t_switch, std::move(k));
+  moveTo(time_);
+}
+
+Vec3 MeshWall::velocityAt(const Vec3& p) const { return state_.velocity + state_.omega.cross(p - state_.axis_point); }
+Vec3 MeshWall::angularVelocity() const { return state_.omega; }
+Vec3 MeshWall::torqueOrigin() const { return state_.axis_point; }
 
 double MeshWall::displacementSinceListBuild() const {
   // A body point X moves by Δ(X) = (R − R0)X + (x − x0): affine in X, so |Δ| is convex and its
   // maximum over the mesh is at a vertex. Exact for meshes up to 200k vertices; above, the
   // bounding-sphere bound |Δ(c)| + ‖R − R0‖₂ ρ with ‖R − R0‖₂ = sqrt(3 − tr(R R0ᵀ)).
-  const Eigen::Matrix3d dR = pose_.R - pose_at_build_.R;
-  const Vec3 dx = pose_.x - pose_at_build_.x;
+  const Eigen::Matrix3d dR = state_.pose.R - pose_at_build_.R;
+  const Vec3 dx = state_.pose.x - pose_at_build_.x;
   if (mesh_.vertices.size() <= 200000) {
     double m2 = 0.0;
     for (const Vec3& v : mesh_.vertices) m2 = std::max(m2, (dR * v + dx).squaredNorm());
     return std::sqrt(m2);
   }
-  const double tr = (pose_.R * pose_at_build_.R.transpose()).trace();
+  const double tr = (state_.pose.R * pose_at_build_.R.transpose()).trace();
   return (dR * bcentre_ + dx).norm() + std::sqrt(std::max(0.0, 3.0 - tr)) * bradius_;
 }
 
-void MeshWall::markListBuilt() { pose_at_build_ = pose_; }
+void MeshWall::markListBuilt() { pose_at_build_ = state_.pose; }
 
 TriangleMesh MeshWall::worldMesh() const {
   TriangleMesh m = mesh_;
-  for (Vec3& v : m.vertices) v = pose_.apply(v);
+  for (Vec3& v : m.vertices) v = state_.pose.apply(v);
   return m;
 }
 
@@ -307,7 +306,7 @@ void MeshWall::buildCandidates(const ParticleView& p, double range) {
     std::vector<std::uint32_t> tris;
 #pragma omp for schedule(static)
     for (long i = 0; i < n; ++i) {
-      const Vec3 xb = pose_.toBody(p.position[i]);
+      const Vec3 xb = state_.pose.toBody(p.position[i]);
       const double reach = p.radius[i] + range;
       gatherTriangles(xb, reach, tris);
       std::uint32_t kept = 0;
@@ -423,7 +422,7 @@ void MeshWall::reduce(const Vec3& xb, double radius, std::uint32_t particle, std
   }
   for (std::size_t k = 0; k < kept; ++k) {
     const Hit& h = hits[k];
-    out.push_back({particle, h.key, h.overlap, pose_.R * h.n, pose_.apply(h.q)});
+    out.push_back({particle, h.key, h.overlap, state_.pose.R * h.n, state_.pose.apply(h.q)});
   }
 }
 
@@ -439,7 +438,7 @@ void MeshWall::findContacts(const ParticleView& p, double max_gap, std::vector<W
     for (long c = 0; c < nc; ++c) {
       const std::uint32_t i = cand_particle_[static_cast<std::size_t>(c)];
       if (i >= p.n) continue;
-      const Vec3 xb = pose_.toBody(p.position[i]);
+      const Vec3 xb = state_.pose.toBody(p.position[i]);
       const double r = p.radius[i], reach = r + max_gap;
       hits.clear();
       for (std::uint32_t k = cand_off_[static_cast<std::size_t>(c)]; k < cand_off_[static_cast<std::size_t>(c) + 1]; ++k) {
@@ -466,7 +465,7 @@ void MeshWall::findContacts(const ParticleView& p, double max_gap, std::vector<W
 
 void MeshWall::contactsOfSphere(const Vec3& centre, double radius, double max_gap, std::uint32_t particle,
                                 std::vector<WallContact>& out) const {
-  const Vec3 xb = pose_.toBody(centre);
+  const Vec3 xb = state_.pose.toBody(centre);
   std::vector<std::uint32_t> tris;
   gatherTriangles(xb, radius + max_gap, tris);
   std::vector<Hit> hits;
@@ -496,11 +495,16 @@ void MeshWall::recordLoads(double t) {
   s.force = force();
   s.torque = torque();
   s.axial_torque = axialTorque();
-  s.distance = kin_.distance(t);
-  s.angle = kin_.angle(t);
+  const geometry::Motion::State m = t == time_ ? state_ : motion_.at(t);
+  s.distance = m.distance;
+  s.angle = m.angle;
   history_.push_back(s);
 }
 
 void MeshWall::writeLoadHistoryCsv(const std::string& path) const { geometry::writeLoadHistoryCsv(path, history_, name_); }
+
+void MeshWall::writeLoadHistoryH5(const std::string& path) const {
+  geometry::writeLoadHistoryH5(path, {{name_, &history_}});
+}
 
 }  // namespace paddy

@@ -57,7 +57,8 @@ struct MeshWallOptions {
 class MeshWall : public Wall {
  public:
   // `body_mesh` in body coordinates (validated; InputError names `name`); the initial world pose
-  // is `placement`; `kinematics` moves it from there (Kinematics::poseAt).
+  // is `placement`; `kinematics` moves it from there (Kinematics::poseAt), later changes of
+  // motion from wherever it is then (changeKinematics, geometry::Motion).
   MeshWall(std::string name, int material, TriangleMesh body_mesh,
            const geometry::Pose& placement = {},
            geometry::Kinematics kinematics = geometry::Kinematics::still(),
@@ -77,14 +78,22 @@ class MeshWall : public Wall {
                     std::vector<WallContact>& out) const override;
   Vec3 torqueOrigin() const override;  // current point of the rotation axis
 
-  // ---- kinematics ----------------------------------------------------------------------------
-  const geometry::Kinematics& kinematics() const { return kin_; }
-  void setKinematics(geometry::Kinematics k);  // keeps the placement; re-applies moveTo(time())
-  const geometry::Pose& placement() const { return placement_; }
-  const geometry::Pose& pose() const { return pose_; }  // current body → world
+  // ---- kinematics (geometry::Motion: segments of Kinematics) --------------------------------
+  const geometry::Kinematics& kinematics() const { return motion_.current(); }  // latest segment
+  const geometry::Motion& motion() const { return motion_; }
+  // Replaces the whole motion, measured from the placement; re-applies moveTo(time()).
+  void setKinematics(geometry::Kinematics k);
+  // From t_switch on, follows k starting from the pose at t_switch (no jump; distance and angle
+  // keep accumulating); re-applies moveTo(time()). See Motion::change.
+  void changeKinematics(double t_switch, geometry::Kinematics k);
+  const geometry::Pose& placement() const { return motion_.placement(); }
+  const geometry::Pose& pose() const { return state_.pose; }  // current body → world
   double time() const { return time_; }
-  Vec3 axis() const;                                    // unit rotation axis (world)
+  Vec3 axis() const { return state_.axis; }                   // unit rotation axis (world)
   double axialTorque() const { return torque().dot(axis()); }
+  double distanceTravelled() const { return state_.distance; }  // Σ ∫ v [m]
+  double angleTurned() const { return state_.angle; }           // Σ ∫ ω [rad]
+  Vec3 translationTravelled() const { return state_.translation; }  // Σ u [m]
 
   // ---- geometry ------------------------------------------------------------------------------
   const TriangleMesh& bodyMesh() const { return mesh_; }
@@ -98,11 +107,13 @@ class MeshWall : public Wall {
   std::size_t candidatePairs() const { return cand_tri_.size(); }
 
   // ---- loads ---------------------------------------------------------------------------------
-  // Appends the current force()/torque() as a sample at time t.
+  // Appends the current force()/torque() as a sample at time t, with the distance and angle
+  // accumulated up to t over all changes of motion.
   void recordLoads(double t);
   const std::vector<geometry::LoadSample>& loadHistory() const { return history_; }
   void clearLoadHistory() { history_.clear(); }
   void writeLoadHistoryCsv(const std::string& path) const;
+  void writeLoadHistoryH5(const std::string& path) const;  // one group named after the wall
 
  private:
   struct Hit;
@@ -118,10 +129,10 @@ class MeshWall : public Wall {
   int material_;
   TriangleMesh mesh_;
   MeshWallOptions opt_;
-  geometry::Pose placement_, pose_, pose_at_build_;
-  geometry::Kinematics kin_;
+  geometry::Motion motion_;
+  geometry::Motion::State state_;  // at time_
+  geometry::Pose pose_at_build_;
   double time_ = 0.0;
-  Vec3 omega_ = Vec3::Zero(), vel_ = Vec3::Zero(), axis_point_ = Vec3::Zero();
   // topology
   std::vector<Vec3> tri_normal_;                 // unit
   std::vector<std::uint8_t> tri_closed_;         // triangle in a closed component

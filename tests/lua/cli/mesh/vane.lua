@@ -1,5 +1,6 @@
 -- A vane turning at a known speed in a cup of spheres: the torque the spheres exert about the
--- axis is finite and opposes the rotation.
+-- axis is finite and opposes the rotation. Its speed is then changed by sim:set_motion: the
+-- angle is continuous and the pose is the closed form.
 local C = require("common")
 local sim = paddy.simulation{gravity = {0, 0, -9.81}, threads = paddy.threads}
 local mud, steel = C.setup(sim)
@@ -30,10 +31,39 @@ end
 C.check(mean < 0, "mean axial torque %g N m does not oppose the rotation", mean)
 local T = sim:wall_torque(vane)
 C.check(math.abs(sim:wall_axial_torque(vane) - T[3]) < 1e-12 + 1e-9 * math.abs(T[3]), "axial torque is not T_z")
--- A new motion would restart from the placement: refused once the vane has turned; "fixed"
--- stops it where it is.
-local ok, err = pcall(sim.set_motion, sim, vane, {type = "rotate", rpm = 10})
-C.check(not ok and tostring(err):find("has moved"), "set_motion on a moved wall: %s", tostring(err))
+-- Change the speed mid-run: the new motion continues from the vane's current pose, so the angle
+-- is continuous; theta(t) = 0.125 + omega (t - 0.05) before the switch, + 2 rad/s (t - ts) after.
+local ts = sim:time()
+local theta_s = 0.5 * 0.05 * omega + omega * (ts - 0.05)
+local before = sim:wall_pose(vane)
+C.check(math.abs(before.angle - theta_s) < 1e-12, "angle %.17g before the switch, expected %.17g", before.angle, theta_s)
+sim:record_wall_loads(vane)
+sim:set_motion(vane, {type = "rotate", axis = {0, 0, 1}, speed = 2})
+sim:record_wall_loads(vane)
+local h = sim:wall_load_history(vane)
+C.check(h[#h].t == ts and h[#h].angle == h[#h - 1].angle, "angle jumps at the switch: %.17g -> %.17g",
+        h[#h - 1].angle, h[#h].angle)
+C.check(sim:wall_pose(vane).rotation[1][1] == before.rotation[1][1], "the pose jumps at the switch")
+sim:run{duration = 0.05, progress = false, record_loads_every = 0.005}
+local theta = theta_s + 2 * (sim:time() - ts)
+local pose = sim:wall_pose(vane)
+C.check(math.abs(pose.angle - theta) < 1e-12, "angle %.17g after the switch, expected %.17g", pose.angle, theta)
+local R = pose.rotation
+C.check(math.abs(R[1][1] - math.cos(theta)) < 1e-12 and math.abs(R[2][1] - math.sin(theta)) < 1e-12 and
+        math.abs(R[1][2] + math.sin(theta)) < 1e-12 and math.abs(R[3][3] - 1) < 1e-12,
+        "rotation {{%g, %g}, {%g, ...}} is not Rz(%g)", R[1][1], R[1][2], R[2][1], theta)
+C.check(math.abs(pose.origin[1]) < 1e-15 and math.abs(pose.origin[2]) < 1e-15 and math.abs(pose.origin[3] - 0.003) < 1e-15,
+        "the vane's origin moved to {%g, %g, %g}", pose.origin[1], pose.origin[2], pose.origin[3])
+h = sim:wall_load_history(vane)
+for k = 2, #h do
+  local dtk = h[k].t - h[k - 1].t
+  C.check(h[k].angle - h[k - 1].angle <= omega * dtk + 1e-12 and h[k].angle >= h[k - 1].angle,
+          "angle not continuous between samples %d and %d: %.17g -> %.17g", k - 1, k, h[k - 1].angle, h[k].angle)
+end
+-- "fixed" stops it where it is, keeping the axis: the axial torque is still T_z.
 sim:set_motion(vane, {type = "fixed"})
 sim:run{steps = 5, progress = false}
-paddy.result{n = n, mean_torque = mean, csv = sim:write_wall_loads(vane, "vane_torque.csv")}
+C.check(sim:wall_pose(vane).angle == pose.angle, "the vane turned after fixed")
+T = sim:wall_torque(vane)
+C.check(math.abs(sim:wall_axial_torque(vane) - T[3]) < 1e-12 + 1e-9 * math.abs(T[3]), "axial torque is not T_z after fixed")
+paddy.result{n = n, mean_torque = mean, theta = theta, csv = sim:write_wall_loads(vane, "vane_torque.csv")}
