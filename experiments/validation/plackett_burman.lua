@@ -175,12 +175,12 @@ for _, e in ipairs(rows) do
   local line = {e.run}
   for k = 1, 11 do line[#line + 1] = e.coded["H" .. k] end
   for _, h in ipairs(FACTORS) do line[#line + 1] = e.real[h] end
-  for _, v in ipairs{e.edem.slump_mm, e.edem.slump_flow_mm, p.slump_mm, p.slump_flow_mm, dif.slump_mm, dif.slump_flow_mm,
-                     p.slump_flow_ruler_mm, p.slump_flow_area_mm, p.circle_rms_mm, p.particles, p.loose_particles,
-                     p.at_rest, p.rest_time_s, p.lift_stop_s, p.simulated_time_s, p.wall_time_s, p.threads,
-                     e.timestep_fraction, e.status, e.key} do
-    line[#line + 1] = report.cell(v)
-  end
+  -- table.pack keeps the nils (a run not at rest has no rest_time_s): ipairs would stop there.
+  local values = table.pack(e.edem.slump_mm, e.edem.slump_flow_mm, p.slump_mm, p.slump_flow_mm, dif.slump_mm,
+                            dif.slump_flow_mm, p.slump_flow_ruler_mm, p.slump_flow_area_mm, p.circle_rms_mm, p.particles,
+                            p.loose_particles, p.at_rest, p.rest_time_s, p.lift_stop_s, p.simulated_time_s, p.wall_time_s,
+                            p.threads, e.timestep_fraction, e.status, e.key)
+  for k = 1, values.n do line[#line + 1] = report.cell(values[k]) end
   csv_rows[#csv_rows + 1] = line
 end
 util.write_csv("pb_runs.csv", columns, csv_rows)
