@@ -36,7 +36,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "vane_diameter", default = 0.05, unit = "m", min = 0.005, max = 1, description = "vane diameter (blade tips)"},
   {name = "vane_height", default = 0.06, unit = "m", min = 0.005, max = 1, description = "blade height"},
   {name = "vane_bottom", default = 0.03, unit = "m", min = 0, max = 1, description = "height of the blades' lower edge above the cup bottom"},
-  {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time (0.3 is unstable with this JKR mud)"},
+  {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (0.3 is unstable with this JKR mud); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "settle_max_time", default = 0.6, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in"},
   {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
@@ -71,7 +71,8 @@ local filled = sim:fill{
   radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed,
   packing = "lattice", spacing = 1.02, jitter = 0.5,
 }
-local dt = sim:timestep{fraction = P.timestep_fraction}
+local dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params)
+local dt = sim:timestep{fraction = dt_fraction}
 local mass = util.total_mass(sim, P.mud_density)
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("rheometer: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", filled, d * 1000, cg.alpha, dt))
@@ -239,7 +240,7 @@ paddy.result{
   vane = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2,
           bottom = z_vane, torque_factor_m3 = measure.vane_torque_factor(vane_geometry)},
   particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed,
-  settle_time_s = settle_time, time_step = dt,
+  settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),
   coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,

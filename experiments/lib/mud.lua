@@ -77,6 +77,30 @@ function M.setup(sim, P, c)
   return mud, steel
 end
 
+-- Time step for the contact parameters c. timestep_fraction (of the Rayleigh time) is the step
+-- found stable for the reference mud, whose strongest damping is the mud-mud restitution 0.13;
+-- stronger damping shortens the stable step of an explicit integrator. For a contact with damping
+-- ratio ζ the limit is ω Δt ≤ 2 (√(1+ζ²) − ζ) (central difference with damping: Hughes 2000,
+-- §9.1; for DEM contacts: Otsubo, O'Sullivan & Shire 2017); Hertz-Mindlin damping has
+-- ζ = √(5/6) |β|, β = ln e / √(ln²e + π²). The fraction is scaled by g(e_min) / g(0.13),
+-- g(e) = √(1+ζ²) − ζ, where that is below 1 (a step is never lengthened; at e_min ≥ 0.13 it is
+-- exactly timestep_fraction). e_min: the smallest restitution of the contact laws.
+-- Returns the fraction to use and the factor.
+M.stable_restitution = 0.13
+function M.damping_ratio(e)
+  local l = math.log(e)
+  return math.sqrt(5 / 6) * math.abs(l) / math.sqrt(l * l + math.pi ^ 2)
+end
+function M.timestep_fraction(P, c)
+  local function g(e)
+    local z = M.damping_ratio(e)
+    return math.sqrt(1 + z * z) - z
+  end
+  local e = math.min(c.mud_mud_restitution, c.mud_steel_restitution)
+  local factor = math.min(1, g(e) / g(M.stable_restitution))
+  return P.timestep_fraction * factor, factor
+end
+
 -- Particle radius option of sim:fill: monodisperse, or a normal distribution of diameters with
 -- relative standard deviation `spread`, truncated at ±2 std.
 function M.radius(d, spread)

@@ -68,6 +68,22 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
+elseif(CASE STREQUAL "timestep_damping")
+  run_paddy(code se run ${HERE}/timestep_damping.lua --out out --threads 1)
+  expect_code(${code} 0)
+  result(ok ok)
+  # A strongly damped slump (e = 0.01) runs at the shortened step and records it.
+  run_paddy(code se run ${SOURCE}/experiments/slump.lua --out slump --threads 1 --set cone=none
+            --set particle_diameter=0.03 --set max_time=0.05 --set pictures=false --set snapshot_interval=0
+            --set progress=false --set mud_mud_restitution=0.01)
+  expect_code(${code} 0)
+  file(READ ${WORK}/slump/result.json doc)
+  string(JSON fraction GET "${doc}" results time_step_fraction)
+  string(JSON factor GET "${doc}" results time_step_damping_factor)
+  expect_number(${fraction} LESS 0.161 "time_step_fraction at e = 0.01")
+  expect_number(${fraction} GREATER 0.1608 "time_step_fraction at e = 0.01")
+  expect_number(${factor} LESS 0.805 "damping factor at e = 0.01")
+
 elseif(CASE STREQUAL "measure_errors")
   # Bad input to a binding is an input error (exit 2) at the script's line.
   file(WRITE ${WORK}/bad.lua [=[
