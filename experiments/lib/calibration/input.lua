@@ -34,7 +34,7 @@ end
 --   screening, steepest_ascent, box_behnken, verification, rheometer, surrogate.
 function M.read(path)
   local ok, t = pcall(paddy.read_json, path)
-  if not ok then error(t, 0) end
+  if not ok then error((tostring(t):gsub("^%s+", "")), 0) end
   if type(t) ~= "table" then fail(path, "the top level must be an object") end
   local input = {path = path, description = t.description or "", experiment = t.experiment or "slump.lua"}
 
