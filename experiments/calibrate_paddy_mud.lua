@@ -28,6 +28,7 @@
 -- tolerance or the budget is spent; the report puts simulations-to-tolerance side by side.
 local doe = require("paddy.doe")
 local util = require("lib.util")
+local mud = require("lib.mud")
 local input_file = require("lib.calibration.input")
 local jobs = require("lib.calibration.jobs")
 local surrogate = require("lib.calibration.surrogate")
@@ -39,6 +40,7 @@ local P = paddy.parameters{
   {name = "strategy", default = "both", choices = {"reference", "surrogate", "both"}, description = "reference procedure, surrogate-based, or both side by side"},
   {name = "quick", default = false, description = "demonstration variant: coarser particles, fewer replicates and seeds (about 10 minutes on 2 cores)"},
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04, description = "slump-test sphere diameter (quick: 0.016 unless set)"},
+  {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping; one step for all runs, shortened for the lowest restitution any run may use"},
   {name = "experiment_params", default = "", description = "further experiment parameters for every run, 'name=value,name=value'"},
   {name = "rheometer_particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.02, description = "sphere diameter of the verification rheometer (quick: 0.012 unless set)"},
   {name = "rheometer_params", default = "", description = "further rheometer parameters, 'name=value,...' (e.g. speeds_rpm=5;10;20)"},
@@ -79,8 +81,31 @@ local function key_values(text, what)
   return t
 end
 local fixed = {particle_diameter = particle_diameter, pictures = false, snapshot_interval = 0, progress = false}
-for k, v in pairs(key_values(P.experiment_params, "experiment_params")) do fixed[k] = v end
 for _, f in ipairs(input.factors) do fixed[f.parameter] = f.center end   -- factors not varied: centre
+-- One time step for every simulation: the slump test's results depend on the step
+-- (docs/validation.md), so a step that changed with the restitution of each design point would
+-- add its own effect to the restitution's. The step is the experiments' damping-aware one
+-- (docs/physics.md) at the lowest restitution any run may use: a restitution factor's lower bound,
+-- else the parameter's fixed value.
+local lowest = {}
+for _, e in ipairs(mud.contact) do
+  if e.name:match("restitution$") then lowest[e.name] = e.default end
+end
+local user = key_values(P.experiment_params, "experiment_params")
+for name in pairs(lowest) do
+  if type(user[name]) == "number" then lowest[name] = user[name] end
+end
+for _, f in ipairs(input.factors) do
+  if lowest[f.parameter] then
+    lowest[f.parameter] = f.bounds[1] > -math.huge and f.bounds[1] or math.min(f.low, f.origin, f.search[1])
+  end
+end
+local e_low = math.huge
+for _, v in pairs(lowest) do e_low = math.min(e_low, v) end
+local step = {lowest_restitution = e_low, factor = mud.timestep_factor(e_low)}
+step.fraction = P.timestep_fraction * step.factor
+fixed.timestep_fraction, fixed.timestep_damping = step.fraction, false
+for k, v in pairs(user) do fixed[k] = v end
 
 local campaign = paddy.campaign{
   dir = P.campaign_dir ~= "" and P.campaign_dir or nil, executor = P.executor,
@@ -115,7 +140,8 @@ local function mkdir(dir)
 end
 local figures = mkdir(util.out("figures"))
 local plots = P.pictures and function(name) return mkdir(figures .. "/" .. name) end or function() return nil end
-local outcome = {input = input, parameters = P, particle_diameter = particle_diameter, measured = measured, responses = resp, tolerance = input.tolerance}
+say("one time step for all runs: %.4g x Rayleigh time (damping factor %.3f at restitution %g)", step.fraction, step.factor, e_low)
+local outcome = {input = input, parameters = P, particle_diameter = particle_diameter, time_step = step, measured = measured, responses = resp, tolerance = input.tolerance}
 
 -----------------------------------------------------------------------------------------------
 -- 1. Plackett-Burman screening.
@@ -284,7 +310,8 @@ local function reference_procedure()
   end
   local rheo
   if input.rheometer.run then
-    local rp = {particle_diameter = rheometer_diameter, pictures = P.pictures, snapshot_interval = 0, progress = false}
+    local rp = {particle_diameter = rheometer_diameter, pictures = P.pictures, snapshot_interval = 0, progress = false,
+                timestep_fraction = step.fraction, timestep_damping = false}
     for k, v in pairs(key_values(P.rheometer_params, "rheometer_params")) do rp[k] = v end
     for _, f in ipairs(input.factors) do rp[f.parameter] = f.center end
     for sym, v in pairs(optimum.factors) do rp[input.by_symbol[sym].parameter] = v end

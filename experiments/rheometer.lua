@@ -37,6 +37,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "vane_height", default = 0.06, unit = "m", min = 0.005, max = 1, description = "blade height"},
   {name = "vane_bottom", default = 0.03, unit = "m", min = 0, max = 1, description = "height of the blades' lower edge above the cup bottom"},
   {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (0.3 is unstable with this JKR mud); shortened for restitutions below 0.13 (docs/physics.md)"},
+  {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 0.6, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in"},
   {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
@@ -71,7 +72,8 @@ local filled = sim:fill{
   radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed,
   packing = "lattice", spacing = 1.02, jitter = 0.5,
 }
-local dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params)
+local dt_fraction, dt_damping_factor = P.timestep_fraction, 1
+if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params) end
 local dt = sim:timestep{fraction = dt_fraction}
 local mass = util.total_mass(sim, P.mud_density)
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil

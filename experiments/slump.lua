@@ -36,6 +36,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "cone_bottom_diameter", default = 0.2, unit = "m", min = 0.01, max = 1, description = "cone bottom inner diameter"},
   {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "fill this fraction of the height above the rim, struck off after settling"},
   {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (0.3 is unstable with this JKR mud); shortened for restitutions below 0.13 (docs/physics.md)"},
+  {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone"},
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
   {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
@@ -88,7 +89,8 @@ else
   fill.packing, fill.volume_fraction = "random", 0.5
 end
 local filled, solid_fraction = sim:fill(fill)
-local dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params)
+local dt_fraction, dt_damping_factor = P.timestep_fraction, 1
+if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params) end
 local dt = sim:timestep{fraction = dt_fraction}
 local mass = util.total_mass(sim, P.mud_density)
 io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n",

@@ -91,13 +91,15 @@ function M.damping_ratio(e)
   local l = math.log(e)
   return math.sqrt(5 / 6) * math.abs(l) / math.sqrt(l * l + math.pi ^ 2)
 end
-function M.timestep_fraction(P, c)
-  local function g(e)
-    local z = M.damping_ratio(e)
+function M.timestep_factor(e)
+  local function g(r)
+    local z = M.damping_ratio(r)
     return math.sqrt(1 + z * z) - z
   end
-  local e = math.min(c.mud_mud_restitution, c.mud_steel_restitution)
-  local factor = math.min(1, g(e) / g(M.stable_restitution))
+  return math.min(1, g(e) / g(M.stable_restitution))
+end
+function M.timestep_fraction(P, c)
+  local factor = M.timestep_factor(math.min(c.mud_mud_restitution, c.mud_steel_restitution))
   return P.timestep_fraction * factor, factor
 end
 

@@ -76,7 +76,13 @@ if [ "$executor" = slurm ]; then
   checks+=(--set strategy=reference)
   # Same seeds and thread count as the local case: the reference procedure must agree exactly.
   local_result="$(dirname "$work")/e2e/result_first.json"
-  [ -f "$local_result" ] && checks+=(--set "same_reference_as=$local_result") && echo "comparing with $local_result"
+  # (only when that result is newer than the code and scripts that made this one)
+  if [ -f "$local_result" ] && [ -z "$(find "$paddy" "$src/experiments" "$src/tests/calibration" -newer "$local_result" -print -quit)" ]; then
+    checks+=(--set "same_reference_as=$local_result")
+    echo "comparing with $local_result"
+  else
+    echo "no up-to-date local result to compare with (run calibration.e2e first)"
+  fi
 fi
 "$paddy" run "$src/tests/calibration/check_calibration.lua" "${checks[@]}" --out "$work/check" || fail "check_calibration.lua"
 echo "calibration_e2e ($executor): ok"

@@ -27,6 +27,17 @@ for _, resp in ipairs({"slump_mm", "slump_flow_mm"}) do
 end
 check(#r.selected_factors == 3, "three factors selected, got %d", #r.selected_factors)
 
+-- One time step for every simulation: the damping-aware step at the lowest restitution bound
+-- (0.01 in the input: factor 0.8043416 of 0.2), the same in every job's result.json.
+check(math.abs(cal.time_step.factor - 0.8043416) < 1e-6 and cal.time_step.lowest_restitution == 0.01,
+      "time step factor %s at restitution %s", tostring(cal.time_step.factor), tostring(cal.time_step.lowest_restitution))
+for _, s in ipairs(cal.simulations) do
+  local job = paddy.read_json(P.dir .. "/campaign/jobs/" .. s.key .. "/result.json").results
+  check(job.time_step_fraction == cal.time_step.fraction and job.time_step_damping_factor == 1,
+        "simulation %d (%s): time step fraction %s, expected %s", s.index, s.stage, tostring(job.time_step_fraction),
+        tostring(cal.time_step.fraction))
+end
+
 -- Every simulation is logged once, with a distinct key.
 local keys = {}
 for _, s in ipairs(cal.simulations) do

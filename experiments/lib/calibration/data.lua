@@ -13,7 +13,7 @@ local function strip(rows, responses)
 end
 
 function M.document(o)
-  local doc = {measured = o.measured, tolerance = o.tolerance, input = o.input.path, responses = o.responses,
+  local doc = {measured = o.measured, tolerance = o.tolerance, time_step = o.time_step, input = o.input.path, responses = o.responses,
                wall_time_s = o.wall_time_s, simulations = o.simulations, to_tolerance = compare.to_tolerance(o),
                screening = {design = o.screening.design, runs = strip(o.screening.runs), fit = o.screening.fit,
                             ranking = o.screening.ranking, selected = o.screening.selected}}

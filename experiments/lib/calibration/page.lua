@@ -23,9 +23,9 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}.eq{font-family:monospace;
 .ok{color:#070}.bad{color:#a00}</style></head><body>]])
   add('<h1>Calibration report</h1>')
   add('<p>' .. esc(input.description) .. '</p>')
-  add(string.format('<p>Input file <code>%s</code>; experiment <code>%s</code>; particle diameter %s m; strategy %s; %d distinct simulations; wall time %s s. Paddy %s.</p>',
-                    esc(input.path), esc(input.experiment), num(o.particle_diameter), esc(o.parameters.strategy),
-                    #o.simulations, num(o.wall_time_s), esc(paddy.version)))
+  add(string.format('<p>Input file <code>%s</code>; experiment <code>%s</code>; particle diameter %s m; time step %s × the Rayleigh time for every run (damping factor %s at the lowest restitution %s); strategy %s; %d distinct simulations; wall time %s s. Paddy %s.</p>',
+                    esc(input.path), esc(input.experiment), num(o.particle_diameter), num(o.time_step.fraction), num(o.time_step.factor, 3),
+                    num(o.time_step.lowest_restitution), esc(o.parameters.strategy), #o.simulations, num(o.wall_time_s), esc(paddy.version)))
 
   -- Summary.
   add('<h2>Summary</h2>')

@@ -59,7 +59,7 @@ end
 
 -- The experiment's result.json entries.
 function M.summary(o, files)
-  local s = {measured = o.measured, tolerance = o.tolerance, simulations = #o.simulations, wall_time_s = o.wall_time_s,
+  local s = {measured = o.measured, tolerance = o.tolerance, time_step = o.time_step, simulations = #o.simulations, wall_time_s = o.wall_time_s,
              selected_factors = o.screening.selected, to_tolerance = compare.to_tolerance(o),
              report = files.html, calibration_json = files.json, csv = files.csv}
   if o.reference then
