@@ -5,7 +5,8 @@
 --   1. A seeded Latin hypercube of `initial_points` simulations.
 --   2. Rounds of `batch` suggestions (run in parallel) until the budget is spent or
 --   3. a simulation within the tolerance is confirmed: `confirm_seeds` further seeds at the same
---      parameters, and the mean of all of them is within the tolerance too.
+--      parameters (run even when the search budget is spent), and the mean of all of them is
+--      within the tolerance too.
 local jobs = require("lib.calibration.jobs")
 local doe = require("paddy.doe")
 local M = {}
@@ -72,9 +73,9 @@ function M.run(o)
     local cand = pending[1]
     if cand and cand.worst <= tol then
       local group = {cand}
-      if S.confirm_seeds > 0 and #evaluations < S.budget then
+      if S.confirm_seeds > 0 then   -- confirmation belongs to the result, like a verification: not cut by the budget
         local list = {}
-        for s = 1, math.min(S.confirm_seeds, S.budget - #evaluations) do list[s] = {values = cand.values, of = cand.n} end
+        for s = 1, S.confirm_seeds do list[s] = {values = cand.values, of = cand.n} end
         for _, ev in ipairs(evaluate("confirm", list)) do group[#group + 1] = ev end
       end
       local rows = {}
