@@ -58,7 +58,7 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}.eq{font-family:monospace;
                        ref and "optimised" or "fixed at centre"}
   end
   add(table_html({"symbol", "parameter", "reference optimum", "surrogate result", "note"}, rows, "Calibrated parameters (at the reference 2 mm particle size)"))
-  add(figure(ch.convergence, "Best worst-response relative error so far against the simulations used, both strategies"))
+  add(figure(ch.convergence, "Best single-run worst-response error so far against the simulations used, both strategies. One run can fall within the tolerance by chance, even in the screening; the table above counts results averaged over seeds"))
 
   -- 1. Screening.
   add('<h2>1. Plackett-Burman screening</h2>')
