@@ -70,16 +70,6 @@ if P.quick then
 end
 local seed0 = paddy.seed
 
--- Parameters for every run: resolution, quiet runs, and the user's extras.
-local function key_values(text, what)
-  local t = {}
-  for item in text:gmatch("[^,]+") do
-    local k, v = item:match("^%s*([%w_]+)%s*=%s*(.-)%s*$")
-    if not k then error(what .. ": '" .. item .. "' is not name=value", 0) end
-    t[k] = tonumber(v) or (v == "true" and true) or (v ~= "false" and v:gsub(";", ",")) or false
-  end
-  return t
-end
 local fixed = {particle_diameter = particle_diameter, pictures = false, snapshot_interval = 0, progress = false}
 for _, f in ipairs(input.factors) do fixed[f.parameter] = f.center end   -- factors not varied: centre
 -- One time step for every simulation: the slump test's results depend on the step
@@ -91,7 +81,7 @@ local lowest = {}
 for _, e in ipairs(mud.contact) do
   if e.name:match("restitution$") then lowest[e.name] = e.default end
 end
-local user = key_values(P.experiment_params, "experiment_params")
+local user = util.assignments(P.experiment_params, "experiment_params")
 for name in pairs(lowest) do
   if type(user[name]) == "number" then lowest[name] = user[name] end
 end
@@ -312,7 +302,7 @@ local function reference_procedure()
   if input.rheometer.run then
     local rp = {particle_diameter = rheometer_diameter, pictures = P.pictures, snapshot_interval = 0, progress = false,
                 timestep_fraction = step.fraction, timestep_damping = false}
-    for k, v in pairs(key_values(P.rheometer_params, "rheometer_params")) do rp[k] = v end
+    for k, v in pairs(util.assignments(P.rheometer_params, "rheometer_params")) do rp[k] = v end
     for _, f in ipairs(input.factors) do rp[f.parameter] = f.center end
     for sym, v in pairs(optimum.factors) do rp[input.by_symbol[sym].parameter] = v end
     if input.rheometer.measured_torque_csv then

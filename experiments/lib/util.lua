@@ -85,6 +85,28 @@ function M.read_csv(path)
   return rows, header
 end
 
+-- "cone=none, max_time=0.5, speeds_rpm=5;10" → {cone = "none", max_time = 0.5, speeds_rpm = "5,10"}:
+-- name=value items separated by commas; numbers and true/false converted; a ";" inside a value
+-- stands for a comma (list parameters). "" → {}. An item that is not name=value is an error
+-- naming the parameter.
+function M.assignments(text, what)
+  local out = {}
+  for item in tostring(text or ""):gmatch("[^,]+") do
+    if item:match("%S") then
+      local name, value = item:match("^%s*([%w_]+)%s*=%s*(.-)%s*$")
+      if not name or value == "" then error(what .. ": '" .. item .. "' is not name=value", 2) end
+      if tonumber(value) then
+        out[name] = math.tointeger(tonumber(value)) or tonumber(value)
+      elseif value == "true" or value == "false" then
+        out[name] = value == "true"
+      else
+        out[name] = (value:gsub(";", ","))
+      end
+    end
+  end
+  return out
+end
+
 -- "5, 10,20" → {5, 10, 20}; error naming the parameter on anything else.
 function M.numbers(text, what)
   local list = {}

@@ -2,39 +2,17 @@
 -- "name=value" overrides in parameters, statistics, a JSON writer, the paths of the reference
 -- tables, and the collection of one slump run into a flat row. Pictures and CSV files go through
 -- lib.util (util.gnuplot, util.write_csv).
+local util = require("lib.util")
 local M = {}
 
--- "1, 2,3" → {1, 2, 3}; "" → nil.
+-- "1, 2,3" → {1, 2, 3} (util.numbers); "" → nil.
 function M.numbers(text, what)
   if text == nil or tostring(text):match("^%s*$") then return nil end
-  local list = {}
-  for item in tostring(text):gmatch("[^,;%s]+") do
-    local v = tonumber(item)
-    if not v then error(what .. ": '" .. item .. "' is not a number", 2) end
-    list[#list + 1] = v
-  end
-  return list
+  return util.numbers(text, what)
 end
 
--- "cone=none, max_time=0.5" → {cone = "none", max_time = 0.5} (numbers and booleans converted).
-function M.assignments(text, what)
-  local out = {}
-  if text == nil then return out end
-  for item in tostring(text):gmatch("[^,;]+") do
-    if item:match("%S") then
-      local name, value = item:match("^%s*([%w_]+)%s*=%s*(.-)%s*$")
-      if not name or value == "" then error(what .. ": '" .. item .. "' is not name=value", 2) end
-      if tonumber(value) then
-        out[name] = math.tointeger(tonumber(value)) or tonumber(value)
-      elseif value == "true" or value == "false" then
-        out[name] = value == "true"
-      else
-        out[name] = value
-      end
-    end
-  end
-  return out
-end
+-- "cone=none, max_time=0.5" → {cone = "none", max_time = 0.5} (util.assignments).
+M.assignments = util.assignments
 
 -- Copy of a table with `extra` merged over it.
 function M.merge(base, extra)
