@@ -124,12 +124,8 @@ local function level(lo, hi, coded)
   if coded == -1 then return lo elseif coded == 1 then return hi elseif coded == 0 then return (lo + hi) / 2 end
   return (lo + hi) / 2 + coded * (hi - lo) / 2
 end
-local function mkdir(dir)
-  os.execute("mkdir -p '" .. dir:gsub("'", "'\\''") .. "'")
-  return dir
-end
-local figures = mkdir(util.out("figures"))
-local plots = P.pictures and function(name) return mkdir(figures .. "/" .. name) end or function() return nil end
+local figures = util.mkdir(util.out("figures"))
+local plots = P.pictures and function(name) return util.mkdir(figures .. "/" .. name) end or function() return nil end
 say("one time step for all runs: %.4g x Rayleigh time (damping factor %.3f at restitution %g)", step.fraction, step.factor, e_low)
 local outcome = {input = input, parameters = P, particle_diameter = particle_diameter, time_step = step, measured = measured, responses = resp, tolerance = input.tolerance}
 

@@ -32,6 +32,12 @@ function M.out(name)
   return paddy.out_dir .. "/" .. name
 end
 
+-- Creates a directory (and its parents) if it does not exist; returns it.
+function M.mkdir(dir)
+  os.execute("mkdir -p '" .. dir:gsub("'", "'\\''") .. "'")
+  return dir
+end
+
 -- Writes rows (arrays of numbers) as whitespace-separated columns, with a header comment.
 function M.write_columns(name, header, rows)
   local f = assert(io.open(M.out(name), "w"))

@@ -4,7 +4,7 @@ local util = require("lib.util")
 local compare = require("lib.calibration.compare")
 local M = {}
 
-local function strip(rows, responses)
+local function strip(rows)
   local out = {}
   for i, r in ipairs(rows) do
     out[i] = {label = r.label, seed = r.seed, key = r.key, index = r.index, params = r.params, responses = r.responses}

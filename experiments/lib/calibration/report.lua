@@ -22,8 +22,8 @@ end
 -- Writes everything; returns {html =, json =, csv = {...}, figures = {...}}.
 function M.write(a)
   local o = a.outcome
-  os.execute("mkdir -p '" .. util.out("data"):gsub("'", "'\\''") .. "'")
-  local files = {csv = {}}
+  util.mkdir(util.out("data"))
+  local files = {}
   files.json = paddy.write_json("calibration.json", data.document(o))
   files.csv = data.write_csvs(o)
   local ch, pics = {}, {}

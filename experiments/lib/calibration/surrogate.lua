@@ -36,7 +36,7 @@ function M.run(o)
     local f = input.by_symbol[sym]
     factors[#factors + 1] = {name = sym, low = f.search[1], high = f.search[2]}
   end
-  local evaluations, data = {}, {}
+  local evaluations, data, best = {}, {}, nil
   local function evaluate(kind, list)
     local points = {}
     for i, x in ipairs(list) do
@@ -51,6 +51,7 @@ function M.run(o)
       local ev = {n = #evaluations + 1, kind = kind, values = points[i].values, seed = points[i].seed, responses = row.responses,
                   errors = e, worst = worst, index = row.index, predicted = list[i].predicted, of = list[i].of}
       evaluations[#evaluations + 1] = ev
+      if not best or ev.worst < best.worst then best = ev end
       data[#data + 1] = o.row_of(ev.values, ev.responses)
       added[#added + 1] = ev
     end
@@ -99,11 +100,7 @@ function M.run(o)
                            suggestions = s.suggestions}
     pending = evaluate("ei", list)
     o.say("   round %d: %d simulations, best single-run error %.2f %%", round, #evaluations,
-          100 * math.min(table.unpack((function() local t = {} for i, ev in ipairs(evaluations) do t[i] = ev.worst end return t end)())))
-  end
-  local best
-  for _, ev in ipairs(evaluations) do
-    if not best or ev.worst < best.worst then best = ev end
+          100 * best.worst)
   end
   return {factors = factors, evaluations = evaluations, rounds = rounds, confirmed = confirmed, best = best,
           budget = S.budget, success = confirmed ~= nil}
