@@ -40,7 +40,7 @@ local P = paddy.parameters{
   {name = "strategy", default = "both", choices = {"reference", "surrogate", "both"}, description = "reference procedure, surrogate-based, or both side by side"},
   {name = "quick", default = false, description = "demonstration variant: coarser particles, fewer replicates and seeds (about 10 minutes on 2 cores)"},
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04, description = "slump-test sphere diameter (quick: 0.016 unless set)"},
-  {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping; one step for all runs, shortened for the lowest restitution any run may use"},
+  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping; one step for all runs, shortened for the lowest restitution any run may use"},
   {name = "experiment_params", default = "", description = "further experiment parameters for every run, 'name=value,name=value'"},
   {name = "rheometer_particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.02, description = "sphere diameter of the verification rheometer (quick: 0.012 unless set)"},
   {name = "rheometer_params", default = "", description = "further rheometer parameters, 'name=value,...' (e.g. speeds_rpm=5;10;20)"},

@@ -35,7 +35,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "cone_top_diameter", default = 0.1, unit = "m", min = 0.01, max = 1, description = "cone top inner diameter"},
   {name = "cone_bottom_diameter", default = 0.2, unit = "m", min = 0.01, max = 1, description = "cone bottom inner diameter"},
   {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "fill this fraction of the height above the rim, struck off after settling"},
-  {name = "timestep_fraction", default = 0.2, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (0.3 is unstable with this JKR mud); shortened for restitutions below 0.13 (docs/physics.md)"},
+  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (converged at 0.1; 0.2 is stable but not converged with this JKR mud, 0.3 unstable); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone"},
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},

@@ -3,9 +3,9 @@
 local M = {}
 
 -- RMS translational speed of the particles, mass-weighted: v = sqrt(2 KE_trans / M). The
--- rotational part is left out on purpose: the constant-torque rolling model lets resting spheres
--- chatter in rotation (the torque flips sign every step), which would keep sim:kinetic_energy()
--- from ever falling although nothing moves. `total_mass` is unused (kept for the call sites).
+-- rotational part is left out: the rest criterion asks whether the mud still flows, and a
+-- sphere spinning in place (held by its neighbours) does not move the pile. `total_mass` is
+-- unused (kept for the call sites).
 function M.rms_speed(sim, total_mass)
   local v = sim:velocities()
   local radii = sim:radii()

@@ -22,8 +22,8 @@ local P = paddy.parameters{
   {name = "seed", default = 1, type = "integer", min = 1, max = 2147483647, description = "seed of every run (fill jitter)"},
   {name = "max_parallel", default = 1, type = "integer", min = 1, max = 256, description = "slump runs at once"},
   {name = "threads_per_job", default = 1, type = "integer", min = 1, max = 256, description = "threads of each slump run"},
-  {name = "timestep_fraction", default = 0.0, min = 0, max = 0.5, description = "time step / Rayleigh time of every run (0: slump.lua's default, 0.2)"},
-  {name = "fallback_timestep_fraction", default = 0.1, min = 0, max = 0.5,
+  {name = "timestep_fraction", default = 0.0, min = 0, max = 0.5, description = "time step / Rayleigh time of every run (0: slump.lua's default, 0.1)"},
+  {name = "fallback_timestep_fraction", default = 0.05, min = 0, max = 0.5,
    description = "a run that stops because its time step is too large runs again with this fraction (0: never)"},
   {name = "max_attempts", default = 1, type = "integer", min = 1, max = 10, description = "attempts per job (the runs are deterministic)"},
   {name = "slump_set", default = "", description = "extra slump.lua parameters for every run, e.g. 'cone=none,max_time=0.5'"},
@@ -98,7 +98,7 @@ for _, row in ipairs(table4) do
       real[h] = real_level(h, row[h])
       params[PARAM[h]] = real[h]
     end
-    local d = {row = row, real = real, params = params, timestep_fraction = P.timestep_fraction > 0 and P.timestep_fraction or 0.2}
+    local d = {row = row, real = real, params = params, timestep_fraction = P.timestep_fraction > 0 and P.timestep_fraction or 0.1}  -- 0.1: slump.lua default
     local key = probe:submit{script = script, params = params, seed = P.seed}
     local before = earlier_error(key)
     if probe:status(key) ~= "done" and timestep_failure(before) then

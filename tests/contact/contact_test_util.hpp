@@ -150,6 +150,9 @@ struct SphereOnWall {
     const Vec3 tq = arm.cross(b.ft[0]) + b.torque_i[0];
     v += dt / m * f;
     w += dt / inertia * tq;
+    // Resisting torque, applied implicitly as the engine does: slows |ω| by R dt/I, stops at 0.
+    const double loss = dt / inertia * b.resist_i[0], speed = w.norm();
+    w = speed > loss ? Vec3(w * (1.0 - loss / speed)) : Vec3::Zero();
     x += dt * v;
   }
 };

@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <string>
 
 using namespace paddy;
 
@@ -81,5 +82,71 @@ TEST_CASE("rolling resistance stops a rolling sphere at the closed-form distance
     INFO(model << ": distance " << dist << " expected " << v0 * v0 / (2 * a));
     REQUIRE(dist == Approx(v0 * v0 / (2.0 * a)).epsilon(0.03));
     REQUIRE(std::abs(sim.particles().velocity[0].x()) < 0.01 * v0);
+    if (std::string(model) == "constant_torque") {
+      // Once stopped, the type A torque holds the sphere: no rotation at all (an explicit
+      // −R ω/|ω| would flip ω every step), and it does not creep.
+      sim.run(0.2);
+      REQUIRE(sim.particles().omega[0].norm() == 0.0);
+      const double x1 = sim.particles().position[0].x();
+      sim.run(0.2);
+      REQUIRE(std::abs(sim.particles().position[0].x() - x1) < 1e-9 * R);
+    }
+  }
+}
+
+namespace {
+// A sphere on a plane inclined by θ (gravity tilted), type A rolling friction μ_r, sticking
+// Coulomb friction: distance rolled down the slope in `duration` after settling.
+double rollDownIncline(double tan_theta, double mu_r, double dt_fraction, double duration, Vec3* omega_out,
+                       double* half_way = nullptr) {
+  const double R = 1e-3, g = 9.81;
+  InteractionSpec spec = hertzMindlin(0.3, 0.9);
+  spec.rolling = "constant_torque";
+  spec.params["rolling_friction"] = mu_r;
+  auto s = test::mudOnSteelFloor(spec);
+  auto& sim = *s.sim;
+  sim.addParticle(Vec3(0, 0, R), R, s.mud);
+  sim.setTimeStepFraction(dt_fraction);
+  sim.run(0.3);  // settle on the level plane
+  const double c = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
+  sim.setGravity(Vec3(g * tan_theta * c, 0.0, -g * c));
+  sim.particles().velocity[0].setZero();
+  sim.particles().omega[0].setZero();
+  const double x0 = sim.particles().position[0].x();
+  sim.run(0.5 * duration);
+  if (half_way) *half_way = sim.particles().position[0].x() - x0;
+  sim.run(0.5 * duration);
+  *omega_out = sim.particles().omega[0];
+  return sim.particles().position[0].x() - x0;
+}
+}  // namespace
+
+TEST_CASE("type A rolling friction on an incline: holds below tan θ = μ_r, closed-form roll above, "
+          "independent of the time step", "[physics][rolling]") {
+  const double R = 1e-3, mu_r = 0.1, g = 9.81;
+  Vec3 w;
+  // Below the limit: torque balance about the contact, m g sinθ r_c < μ_r m g cosθ r_c.
+  for (double frac : {0.2, 0.05}) {
+    double half = 0.0;
+    const double dist = rollDownIncline(0.5 * mu_r, mu_r, frac, 0.5, &w, &half);
+    INFO("dt = " << frac << " T_R: moved " << half << " m in 0.25 s, " << dist << " m in 0.5 s");
+    REQUIRE(w.norm() == 0.0);
+    // Only the elastic shift of the tangential spring when the slope is applied (F_t / S_t ≈
+    // m g sinθ / (8 G* a) ~ 1e-8 m), then no creep at all.
+    REQUIRE(std::abs(dist) < 1e-4 * R);
+    REQUIRE(std::abs(dist - half) < 1e-12 * R);
+  }
+  // Above: rolling without slip with the resisting torque, a = g (sinθ − μ_r cosθ) / (1 + I/(m r_c²))
+  // (r_c = R − δ/2 ≈ R: 1 + I/(m R²) = 7/5).
+  const double tan_theta = 2.0 * mu_r, c = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
+  const double a = g * (tan_theta * c - mu_r * c) / 1.4, t = 0.1;
+  double prev = 0.0;
+  for (double frac : {0.2, 0.05}) {
+    const double dist = rollDownIncline(tan_theta, mu_r, frac, t, &w);
+    INFO("dt = " << frac << " T_R: rolled " << dist << " m, closed form " << 0.5 * a * t * t);
+    REQUIRE(dist == Approx(0.5 * a * t * t).epsilon(0.01));
+    REQUIRE(w.y() * R == Approx(a * t).epsilon(0.01));
+    if (prev != 0.0) REQUIRE(dist == Approx(prev).epsilon(2e-3));
+    prev = dist;
   }
 }

@@ -12,6 +12,12 @@
 //     ft[k] the tangential force on i; j receives −(fn·n + ft).
 //   * torque_i / torque_j are extra torques (rolling, twisting) on i and j; the engine adds the
 //     moments of ft about each centre itself.
+//   * resist_i / resist_j are magnitudes R ≥ 0 of torques that oppose the body's OWN rotation,
+//     −R ω/|ω| (a set-valued, Coulomb-like law such as EDEM's rolling friction "type A"). The
+//     engine sums them per body and applies them implicitly in the integrator: within a step they
+//     slow the rotation by at most R dt / I and can stop it, but never reverse it (see
+//     engine/src/core/integrator.cpp). A model writing its torque explicitly into torque_i instead
+//     would make a body at rest chatter, and the result depend on dt.
 #pragma once
 
 #include <Eigen/Core>
@@ -61,6 +67,8 @@ struct ContactBatch {
   Vec3 ft[kCapacity];              // tangential force on i [N]
   Vec3 torque_i[kCapacity];        // extra torque on i [N m]
   Vec3 torque_j[kCapacity];        // extra torque on j [N m]
+  double resist_i[kCapacity];      // magnitude of a torque opposing i's rotation [N m]
+  double resist_j[kCapacity];      // magnitude of a torque opposing j's rotation [N m]
 
   // Clears shared state and outputs before the sub-models run.
   void resetOutputs() {
@@ -74,6 +82,8 @@ struct ContactBatch {
       ft[k].setZero();
       torque_i[k].setZero();
       torque_j[k].setZero();
+      resist_i[k] = 0.0;
+      resist_j[k] = 0.0;
     }
   }
 };

@@ -15,7 +15,8 @@
 #include <string>
 #include <vector>
 
-#define PADDY_PLUGIN_ABI_VERSION 1
+// Version 2: ContactBatch gained resist_i / resist_j (torques opposing a body's own rotation).
+#define PADDY_PLUGIN_ABI_VERSION 2
 #define PADDY_PLUGIN_EXPORT __attribute__((visibility("default")))
 
 namespace paddy {

@@ -38,6 +38,9 @@ struct ParticleArrays {
   std::vector<int> material;
   std::vector<double> radius, mass, inertia;  // inertia = 2/5 m R²
   std::vector<Vec3> position, velocity, omega, force, torque;
+  // Sum of the magnitudes of the torques opposing the body's own rotation (ContactBatch::resist_i),
+  // applied implicitly by the integrator; not part of `torque` [N m].
+  std::vector<double> resisting_torque;
   std::size_t size() const { return id.size(); }
 };
 

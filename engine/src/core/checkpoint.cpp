@@ -52,6 +52,7 @@ void Simulation::saveCheckpoint(const std::string& path) const {
     f.write("particles/omega", flatten(p_.omega), 3);
     f.write("particles/force", flatten(p_.force), 3);
     f.write("particles/torque", flatten(p_.torque), 3);
+    f.write("particles/resisting_torque", p_.resisting_torque);
     f.write("particles/prev_index", std::vector<std::uint64_t>(impl_->prev_index.begin(), impl_->prev_index.end()));
     const NeighbourList& l = impl_->list;
     f.write("list/start", std::vector<std::uint64_t>(l.start.begin(), l.start.end()));
@@ -107,6 +108,8 @@ void Simulation::loadCheckpoint(const std::string& path) {
   p_.omega = unflatten(f.read<double>("particles/omega"));
   p_.force = unflatten(f.read<double>("particles/force"));
   p_.torque = unflatten(f.read<double>("particles/torque"));
+  p_.resisting_torque = f.read<double>("particles/resisting_torque");
+  if (p_.resisting_torque.size() != p_.id.size()) throw InputError("checkpoint '" + path + "' is corrupt (resisting_torque)");
   auto prev = f.read<std::uint64_t>("particles/prev_index");
   impl_->prev_index.assign(prev.begin(), prev.end());
   NeighbourList& l = impl_->list;

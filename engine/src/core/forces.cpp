@@ -17,6 +17,7 @@ void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
   for (auto& tb : threads) {
     tb.force.resize(n);
     tb.torque.resize(n);
+    tb.resist.resize(n);
     tb.work.resize(laws.size());
     for (std::size_t l = 0; l < laws.size(); ++l) {
       tb.work[l].law = static_cast<int>(l);
@@ -59,8 +60,10 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     ThreadBuffers& tb = threads[static_cast<std::size_t>(t)];
     Vec3* F = (t == 0 && !dry) ? p.force.data() : tb.force.data();
     Vec3* Tq = (t == 0 && !dry) ? p.torque.data() : tb.torque.data();
+    double* Rs = (t == 0 && !dry) ? p.resisting_torque.data() : tb.resist.data();
     std::fill(F, F + n, Vec3::Zero());
     std::fill(Tq, Tq + n, Vec3::Zero());
+    std::fill(Rs, Rs + n, 0.0);
     tb.records.clear();
     tb.max_overlap_ratio = 0.0;
     tb.active_contacts = 0;
@@ -79,11 +82,13 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         const kernel::Applied a = kernel::applied(b, m, b.radius_i[m], is_wall ? 0.0 : b.radius_j[m]);
         F[i] += a.force_i;
         Tq[i] += a.torque_i;
+        Rs[i] += b.resist_i[m];
         if (is_wall) {
           wall_force[w.j[m]] = a.force_i;
         } else {
           F[w.j[m]] -= a.force_i;
           Tq[w.j[m]] += a.torque_j;
+          Rs[w.j[m]] += b.resist_j[m];
         }
         const double ratio = b.overlap[m] / std::min(b.radius_i[m], b.radius_j[m]);
         tb.max_overlap_ratio = std::max(tb.max_overlap_ratio, ratio);
@@ -176,12 +181,15 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
 #pragma omp for schedule(static)
       for (std::size_t i = 0; i < n; ++i) {
         Vec3 f = p.force[i], tq = p.torque[i];
+        double rs = p.resisting_torque[i];
         for (int u = 1; u < nt; ++u) {
           f += threads[static_cast<std::size_t>(u)].force[i];
           tq += threads[static_cast<std::size_t>(u)].torque[i];
+          rs += threads[static_cast<std::size_t>(u)].resist[i];
         }
         p.force[i] = f + p.mass[i] * s.gravity_;
         p.torque[i] = tq;
+        p.resisting_torque[i] = rs;
       }
     }
   }

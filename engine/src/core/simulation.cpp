@@ -86,6 +86,7 @@ std::size_t Simulation::addParticle(const Vec3& x, double radius, int material, 
   p_.omega.push_back(omega);
   p_.force.push_back(Vec3::Zero());
   p_.torque.push_back(Vec3::Zero());
+  p_.resisting_torque.push_back(0.0);
   impl_->prev_index.push_back(Impl::kNoIndex);
   impl_->list_valid = false;
   impl_->forces_valid = false;
@@ -108,6 +109,7 @@ void Simulation::removeParticles(const std::function<bool(std::size_t)>& predica
       p_.omega[w] = p_.omega[r];
       p_.force[w] = p_.force[r];
       p_.torque[w] = p_.torque[r];
+      p_.resisting_torque[w] = p_.resisting_torque[r];
       impl_->prev_index[w] = impl_->prev_index[r];
     }
     ++w;
@@ -122,6 +124,7 @@ void Simulation::removeParticles(const std::function<bool(std::size_t)>& predica
   p_.omega.resize(w);
   p_.force.resize(w);
   p_.torque.resize(w);
+  p_.resisting_torque.resize(w);
   impl_->prev_index.resize(w);
   impl_->list_valid = false;
   impl_->forces_valid = false;

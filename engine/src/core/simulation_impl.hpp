@@ -39,6 +39,7 @@ struct WallContactState {
 
 struct ThreadBuffers {
   std::vector<Vec3> force, torque;   // per particle (thread 0 uses the main arrays)
+  std::vector<double> resist;        // per particle: resisting-torque magnitudes (same rule)
   std::vector<ContactRecord> records;
   double max_overlap_ratio = 0.0;
   std::uint64_t active_contacts = 0;

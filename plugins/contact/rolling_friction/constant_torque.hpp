@@ -5,9 +5,14 @@
 //
 // F_n = fn_friction (elastic normal force: Hertz F_n, or the repulsive part of JKR);
 // R_i = R_i − δ/2, the distance from the centre to the contact point the engine uses.
-// ω̂ = ω/|ω|; no torque when |ω| < 1e-9 rad/s. Wall contacts (radius_j = inf): only i gets a
-// torque. Known limitation of model A: the torque does not vanish at rest, so ω chatters around 0
-// with amplitude ~ τ dt / I. Parameter: rolling_friction μ_r ∈ [0, 10]. No history.
+// The model writes the magnitudes μ_r F_n R_i and μ_r F_n R_j into resist_i / resist_j; the
+// integrator applies the sum over a body's contacts implicitly (engine/src/core/integrator.cpp):
+// the torque opposes the rotation, can stop it within a step and then holds the body at rest
+// against any other torque up to that sum (the static limit of the law), but never reverses it.
+// Written explicitly (τ from ω̂ of the current step), the torque reverses ω every step near rest
+// and the slump test then depends on dt (docs/physics.md §5). Wall contacts (radius_j = inf):
+// only i is resisted; the wall receives no rolling torque (as in EDEM's type A).
+// Parameter: rolling_friction μ_r ∈ [0, 10]. No history.
 #pragma once
 
 #include "../common/contact_math.hpp"
@@ -18,8 +23,6 @@ namespace paddy::contact {
 
 class ConstantTorqueRolling final : public SubModel {
  public:
-  static constexpr double kOmegaRest = 1e-9;  // [rad/s] below this a body counts as not rotating
-
   explicit ConstantTorqueRolling(double rolling_friction) : mu_r_(rolling_friction) {}
 
   void compute(ContactBatch& b, std::size_t) const override {
@@ -27,11 +30,8 @@ class ConstantTorqueRolling final : public SubModel {
     for (std::size_t k = 0; k < b.n; ++k) {
       if (!b.active[k]) continue;
       const double m = mu_r_ * b.fn_friction[k];
-      const double wi = b.omega_i[k].norm();
-      if (wi > kOmegaRest) b.torque_i[k] -= (m * contactLever(b.radius_i[k], b.overlap[k]) / wi) * b.omega_i[k];
-      if (std::isinf(b.radius_j[k])) continue;
-      const double wj = b.omega_j[k].norm();
-      if (wj > kOmegaRest) b.torque_j[k] -= (m * contactLever(b.radius_j[k], b.overlap[k]) / wj) * b.omega_j[k];
+      b.resist_i[k] += m * contactLever(b.radius_i[k], b.overlap[k]);
+      if (!std::isinf(b.radius_j[k])) b.resist_j[k] += m * contactLever(b.radius_j[k], b.overlap[k]);
     }
   }
 
