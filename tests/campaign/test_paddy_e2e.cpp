@@ -99,7 +99,10 @@ local k2 = c:submit{script = "tiny.lua", params = {a = 2}}
 local k3 = c:submit{script = "tiny.lua", params = {a = 50}}
 local runs = c:run()
 local again = c:run()  -- everything done: nothing runs again
-paddy.result{n = #runs, k1 = k1, key1 = runs[1].key, s1 = runs[1].status, r1 = runs[1].result.twice,
+local some = c:run{k3, k1}  -- only these, in this order
+local ok, unknown = pcall(function() return c:run{"0123"} end)
+paddy.result{some_n = #some, some1 = some[1].key == k3, some2 = some[2].key == k1, some_r = some[2].result.twice,
+             unknown_ok = ok, unknown = tostring(unknown),n = #runs, k1 = k1, key1 = runs[1].key, s1 = runs[1].status, r1 = runs[1].result.twice,
              seed1 = runs[1].result.seed, r2 = c:result(k2).twice, s3 = runs[3].status,
              e3 = runs[3].error, st2 = c:status(k2), nkeys = #c:keys(), again = #again}
 )lua";
@@ -124,5 +127,11 @@ paddy.result{n = #runs, k1 = k1, key1 = runs[1].key, s1 = runs[1].status, r1 = r
   CHECK(r["st2"] == "done");
   CHECK(r["nkeys"] == 3);
   CHECK(r["again"] == 3);
+  CHECK(r["some_n"] == 2);
+  CHECK(r["some1"] == true);
+  CHECK(r["some2"] == true);
+  CHECK(r["some_r"].get<double>() == 0.5);
+  CHECK(r["unknown_ok"] == false);
+  CHECK(r["unknown"].get<std::string>().find("0123") != std::string::npos);
   fs::remove_all(dir);
 }

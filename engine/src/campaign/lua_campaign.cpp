@@ -8,6 +8,7 @@
 //   local key = c:submit{script = "slump.lua", params = {restitution = 0.13}, seed = 1, threads = 2}
 //   local runs = c:run()      -- in submission order: {key=, status="done"|"failed",
 //                             --   result={...results...}, metadata={...}, error="..."}
+//   c:run{k1, k2}             -- runs everything queued, reports only these jobs, in this order
 //   c:result(key) → the job's results table (nil, message if it is not done)
 //   c:status(key) → "queued" | "running" | "done" | "failed";   c:keys() → keys in order
 //
@@ -157,10 +158,25 @@ void pushRun(lua_State* L, const Campaign& c, const std::string& key) {
 
 int run(lua_State* L) {
   CampaignHandle& h = checkCampaign(L, 1);
+  // c:run(keys): report only these jobs (in this order), so a script that submits in rounds
+  // does not read every earlier result again each round.
+  std::vector<std::string> only;
+  const bool subset = !lua_isnoneornil(L, 2);
+  if (subset) {
+    if (!lua_istable(L, 2)) throw InputError("c:run: the argument must be a list of job keys (from c:submit)");
+    const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, 2));
+    for (lua_Integer k = 1; k <= n; ++k) {
+      lua_rawgeti(L, 2, k);
+      only.push_back(toString(L, -1, "c:run keys[" + std::to_string(k) + "]"));
+      lua_pop(L, 1);
+      h.campaign->record(only.back());  // unknown key: an error naming it, before anything runs
+    }
+  }
   h.campaign->runAll();
-  lua_createtable(L, static_cast<int>(h.submitted->size()), 0);
+  const auto& keys = subset ? only : *h.submitted;
+  lua_createtable(L, static_cast<int>(keys.size()), 0);
   lua_Integer i = 1;
-  for (const auto& key : *h.submitted) {
+  for (const auto& key : keys) {
     pushRun(L, *h.campaign, key);
     lua_rawseti(L, -2, i++);
   }

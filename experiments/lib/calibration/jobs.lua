@@ -33,7 +33,7 @@ function Runner:run(stage, points)
     keys[i] = self.campaign:submit{script = p.script or self.script, params = params, seed = p.seed}
   end
   local entries = {}
-  for _, e in ipairs(self.campaign:run()) do entries[e.key] = e end
+  for _, e in ipairs(self.campaign:run(keys)) do entries[e.key] = e end
   local rows, failures = {}, {}
   for i, p in ipairs(points) do
     local e = entries[keys[i]]
