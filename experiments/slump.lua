@@ -277,3 +277,18 @@ paddy.result{
                      rows = cg.rows, reference_particle_estimate = particles * cg.alpha ^ 3},
   pictures = pictures,
 }
+
+-- What the user sees on stdout at the end: both responses against the measurement, and where the
+-- results and pictures are.
+local function versus(v, m) return string.format("measured %d mm, %+.1f %%", m, 100 * (v - m) / m) end
+print(string.format("slump       %6.1f mm   (%s)", final.slump * 1000, versus(final.slump * 1000, 231)))
+print(string.format("slump-flow  %6.1f mm   circle fit; ruler %.1f mm   (%s)", flow.diameter_fit * 1000,
+                    flow.ruler.mean * 1000, versus(flow.diameter_fit * 1000, 480)))
+if not at_rest then print("            (the pile was not at rest at max_time: see the warning above)") end
+print("results     " .. util.out("result.json"))
+local shown = {}
+for _, name in ipairs{"side_view", "top_view", "slump_history"} do
+  if pictures[name] then shown[#shown + 1] = pictures[name] end
+end
+if #shown > 0 then print("pictures    " .. table.concat(shown, "\n            ")) end
+if snapshot_every then print("ParaView    " .. util.out("snapshots/particles.xmf")) end
