@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 using namespace paddy;
@@ -130,6 +131,8 @@ TEST_CASE("type A rolling friction on an incline: holds below tan θ = μ_r, clo
     double half = 0.0;
     const double dist = rollDownIncline(0.5 * mu_r, mu_r, frac, 0.5, &w, &half);
     INFO("dt = " << frac << " T_R: moved " << half << " m in 0.25 s, " << dist << " m in 0.5 s");
+    std::printf("[physics] type A on an incline tan = mu_r/2, dt = %.2f T_R: moved %.3e m by 0.25 s, %.3e m by 0.5 s, |w| = %g\n",
+                frac, half, dist, w.norm());
     REQUIRE(w.norm() == 0.0);
     // Only the elastic shift of the tangential spring when the slope is applied (F_t / S_t ≈
     // m g sinθ / (8 G* a) ~ 1e-8 m), then no creep at all.
@@ -144,6 +147,8 @@ TEST_CASE("type A rolling friction on an incline: holds below tan θ = μ_r, clo
   for (double frac : {0.2, 0.05}) {
     const double dist = rollDownIncline(tan_theta, mu_r, frac, t, &w);
     INFO("dt = " << frac << " T_R: rolled " << dist << " m, closed form " << 0.5 * a * t * t);
+    std::printf("[physics] type A on an incline tan = 2 mu_r, dt = %.2f T_R: %.6e m in %.1f s, closed form %.6e m (%+.2e)\n",
+                frac, dist, t, 0.5 * a * t * t, dist / (0.5 * a * t * t) - 1.0);
     REQUIRE(dist == Approx(0.5 * a * t * t).epsilon(0.01));
     REQUIRE(w.y() * R == Approx(a * t).epsilon(0.01));
     if (prev != 0.0) REQUIRE(dist == Approx(prev).epsilon(2e-3));
