@@ -298,7 +298,21 @@ local doc = {
 }
 report.write_json("pb_validation.json", doc)
 
--- Pictures: per run (EDEM vs Paddy), and the main-effect coefficients side by side.
+-- Pictures: per run (EDEM vs Paddy), and the main-effect coefficients side by side. Both are two
+-- clustered bar charts (slump above, slump-flow below) of the columns 2-5 of a data file.
+local function edem_vs_paddy(stem, title, dat, key, xlabel, yrange)
+  return util.gnuplot(stem, string.format([[
+set terminal pngcairo size 900,800 noenhanced font 'sans,11'
+set output '%s'
+set multiplot layout 2,1 title '%s'
+set style data histogram; set style histogram clustered gap 1; set style fill solid 0.8 border -1
+set boxwidth 0.9; set grid ytics; set key %s horizontal; set xzeroaxis lt -1; set yrange %s
+set ylabel 'slump [mm]'
+plot '%s' using 2:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 3 title 'Paddy' lc rgb '#cc6644'
+set ylabel 'slump-flow [mm]'; set xlabel '%s'
+plot '%s' using 4:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 5 title 'Paddy' lc rgb '#cc6644'
+unset multiplot]], util.out(stem .. ".png"), title, key, yrange, dat, xlabel, dat))
+end
 local pictures = {}
 if P.pictures and #done > 0 then
   local lines = {}
@@ -306,18 +320,9 @@ if P.pictures and #done > 0 then
     lines[#lines + 1] = {e.run, e.edem.slump_mm, e.paddy.slump_mm, e.edem.slump_flow_mm, e.paddy.slump_flow_mm}
   end
   util.write_columns("pb_runs.dat", "run edem_slump paddy_slump edem_flow paddy_flow", lines)
-  local dat = util.out("pb_runs.dat")
-  pictures.runs = util.gnuplot("pb_runs", string.format([[
-set terminal pngcairo size 900,800 noenhanced font 'sans,11'
-set output '%s'
-set multiplot layout 2,1 title 'Plackett-Burman runs (Table 4): EDEM (reference, 2 mm) vs Paddy (%.0f mm spheres)'
-set style data histogram; set style histogram clustered gap 1; set style fill solid 0.8 border -1
-set boxwidth 0.9; set grid ytics; set key top right horizontal
-set ylabel 'slump [mm]'; set yrange [200:*]
-plot '%s' using 2:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 3 title 'Paddy' lc rgb '#cc6644'
-set ylabel 'slump-flow [mm]'; set xlabel 'run (13 = centre point)'; set yrange [300:*]
-plot '%s' using 4:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 5 title 'Paddy' lc rgb '#cc6644'
-unset multiplot]], util.out("pb_runs.png"), P.particle_diameter * 1000, dat, dat))
+  pictures.runs = edem_vs_paddy("pb_runs", string.format("Plackett-Burman runs (Table 4): EDEM (reference, 2 mm) vs Paddy (%.0f mm spheres)",
+                                                         P.particle_diameter * 1000),
+                                util.out("pb_runs.dat"), "top right", "run (13 = centre point)", "[0:*]")
   if fit_edem and fit_paddy then
     local eff = {}
     for k, term in ipairs{"H1", "H2", "H3", "H4", "H5", "H6", "H7", "Curvature"} do
@@ -329,18 +334,9 @@ unset multiplot]], util.out("pb_runs.png"), P.particle_diameter * 1000, dat, dat
     f:write("# term edem_slump paddy_slump edem_flow paddy_flow (coded coefficients, mm per coded unit)\n")
     for _, r in ipairs(eff) do f:write(string.format("%s %.6g %.6g %.6g %.6g\n", table.unpack(r))) end
     f:close()
-    local dat2 = util.out("pb_effects.dat")
-    pictures.effects = util.gnuplot("pb_effects", string.format([[
-set terminal pngcairo size 900,800 noenhanced font 'sans,11'
-set output '%s'
-set multiplot layout 2,1 title 'Main effects (coded coefficients, half the high-low difference); curv. = centre - factorial mean'
-set style data histogram; set style histogram clustered gap 1; set style fill solid 0.8 border -1
-set boxwidth 0.9; set grid ytics; set key top left horizontal; set xzeroaxis lt -1
-set ylabel 'slump [mm]'
-plot '%s' using 2:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 3 title 'Paddy' lc rgb '#cc6644'
-set ylabel 'slump-flow [mm]'
-plot '%s' using 4:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 5 title 'Paddy' lc rgb '#cc6644'
-unset multiplot]], util.out("pb_effects.png"), dat2, dat2))
+    pictures.effects = edem_vs_paddy("pb_effects",
+                                     "Main effects (coded coefficients, half the high-low difference); curv. = centre - factorial mean",
+                                     util.out("pb_effects.dat"), "top left", "term", "[*:*]")
   end
 end
 
