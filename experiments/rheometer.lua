@@ -153,7 +153,7 @@ end
 -- 4. Flow curve and Herschel–Bulkley fit.
 local vane_geometry = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2}
 local ok, curve = pcall(measure.vane_flow_curve, {vane = vane_geometry, omega = omegas, torque = torques})
-local fit, fit_error = nil, nil
+local fit, fit_error, fit_warning = nil, nil, nil
 if ok then
   fit = curve.fit
   for k, s in ipairs(steps) do
@@ -161,6 +161,16 @@ if ok then
     s.shear_rate = curve.shear_rate[k]
     s.n_local = curve.n_local[k]
     s.hb_torque_Nm = measure.vane_torque_hb(vane_geometry, fit, s.omega)
+  end
+  -- A fit at the lower bound of n (or with no explained variance) is not a flow curve: the torque
+  -- does not grow with the speed, and Herschel-Bulkley can only return its mean as tau0.
+  local rising = torques[#torques] > torques[1]
+  if fit.n <= 0.05 + 1e-6 or fit.r2 < 0.5 or not rising then
+    fit_warning = string.format("the steady torque %s with the speed (%.3g N m at %g rpm, %.3g N m at %g rpm); the "
+                                .. "Herschel-Bulkley fit (n = %.3g, R^2 = %.2f) describes a yield stress, not a flow curve",
+                                rising and "barely grows" or "does not grow", torques[1], speeds[1], torques[#torques],
+                                speeds[#speeds], fit.n, fit.r2)
+    io.stderr:write("warning: rheometer: ", fit_warning, "\n")
   end
 else
   fit_error = tostring(curve)
@@ -238,6 +248,7 @@ paddy.result{
   steps = steps,
   herschel_bulkley = fit,
   fit_error = fit_error,
+  fit_warning = fit_warning,
   comparison = comparison,
   vane = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2,
           bottom = z_vane, torque_factor_m3 = measure.vane_torque_factor(vane_geometry)},
@@ -250,3 +261,23 @@ paddy.result{
   pictures = pictures,
   torque_csv = util.out("vane_loads.csv"),
 }
+
+-- What the user sees on stdout at the end.
+print("speed [rpm]   steady torque [N m]   shear stress [Pa]")
+for _, st in ipairs(steps) do
+  print(string.format("%11g   %8.4f +- %-8.4f   %10.1f", st.speed_rpm, st.torque_Nm, st.torque_std, st.shear_stress_Pa))
+end
+if fit then
+  print(string.format("Herschel-Bulkley  tau0 = %.4g Pa, K = %.4g Pa s^n, n = %.3f, R^2 = %.3f%s", fit.tau0, fit.K, fit.n,
+                      fit.r2, fit_warning and "  (see the warning above)" or ""))
+end
+if comparison then
+  print(string.format("against %s: mean relative error %.1f %%, largest %.1f %%", comparison.file,
+                      100 * comparison.mean_relative_error, 100 * comparison.max_relative_error))
+end
+print("results     " .. util.out("result.json"))
+local shown = {}
+for _, name in ipairs{"torque", "flow_curve"} do
+  if pictures[name] then shown[#shown + 1] = pictures[name] end
+end
+if #shown > 0 then print("pictures    " .. table.concat(shown, "\n            ")) end

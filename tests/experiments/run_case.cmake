@@ -173,6 +173,26 @@ elseif(CASE STREQUAL "rheometer_mini")
   expect_number(${n} GREATER 0 "HB n")
   expect_file(${WORK}/out/torque.png)
   expect_file(${WORK}/out/vane_loads.csv)
+  # stdout: one line per speed with its steady torque (the 80 rpm line carries result.json's value
+  # to 4 decimals), the fit, where the pictures are.
+  result(t80 steps 2 torque_Nm)
+  string(REGEX MATCH "\n +80 +([0-9]+\\.[0-9]+) \\+-" m "${LAST_STDOUT}")
+  if(NOT m)
+    message(FATAL_ERROR "stdout has no line for 80 rpm:\n${LAST_STDOUT}")
+  endif()
+  expect_number(${CMAKE_MATCH_1} GREATER 0 "printed torque at 80 rpm")
+  # Compare in units of 1e-4 N m: the printed value is result.json's rounded to 4 decimals.
+  string(REGEX REPLACE "^([0-9]+)\\.([0-9][0-9][0-9][0-9]).*" "\\1\\2" printed "${CMAKE_MATCH_1}")
+  string(REGEX REPLACE "^([0-9]+)\\.([0-9][0-9][0-9][0-9]).*" "\\1\\2" stored "${t80}")
+  math(EXPR diff "${printed} - ${stored}")  # 0, or 1 where the rounding went up
+  if(diff LESS 0 OR diff GREATER 1)
+    message(FATAL_ERROR "printed torque ${CMAKE_MATCH_1} does not match result.json ${t80}")
+  endif()
+  foreach(pattern "Herschel-Bulkley +tau0 = " "pictures +[^\n]*torque\\.png")
+    if(NOT LAST_STDOUT MATCHES "${pattern}")
+      message(FATAL_ERROR "stdout lacks '${pattern}':\n${LAST_STDOUT}")
+    endif()
+  endforeach()
 
 elseif(CASE STREQUAL "validation_pb")
   # The Plackett-Burman validation campaign on 13 tiny slump runs (52 spheres of 40 mm, the column

@@ -136,3 +136,25 @@ TEST_CASE("lua: assignments parse name=value", "[lua]") {
   CHECK_THROWS(paddy::lua::parseAssignment("=1"));
   CHECK_THROWS(paddy::lua::parseAssignment("abc"));
 }
+
+#include "lua/thread_contention.hpp"
+
+TEST_CASE("lua: warning for threads on busy cores", "[lua][threads]") {
+  using paddy::lua::contentionWarning;
+  using paddy::lua::CpuLoad;
+  CHECK(contentionWarning(1, CpuLoad{7.0, 2}).empty());  // one thread never waits for another
+  CHECK(contentionWarning(2, CpuLoad{0.1, 2}).empty());  // quiet machine
+  CHECK(contentionWarning(2, CpuLoad{0.4, 2}).empty());  // 1.6 idle + 0.5 slack holds 2
+  CHECK(contentionWarning(8, CpuLoad{2.0, 16}).empty());
+  const std::string busy = contentionWarning(2, CpuLoad{2.0, 2});  // two other runs on a 2-core machine
+  CHECK(busy.find("2 threads") != std::string::npos);
+  CHECK(busy.find("load average is 2.0 on 2 CPUs") != std::string::npos);
+  CHECK(busy.find("--threads 1") != std::string::npos);
+  CHECK_FALSE(contentionWarning(2, CpuLoad{1.0, 2}).empty());  // one core busy: still waits
+  CHECK(contentionWarning(16, CpuLoad{10.0, 16}).find("--threads 6") != std::string::npos);  // 6 idle
+  // The machine's figures can be read here.
+  const auto now = paddy::lua::currentCpuLoad();
+  REQUIRE(now.has_value());
+  CHECK(now->cpus >= 1);
+  CHECK(now->load1 >= 0.0);
+}

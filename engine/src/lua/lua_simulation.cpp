@@ -5,6 +5,7 @@
 #include "lua/registry.hpp"
 #include "lua/runtime_state.hpp"
 #include "lua/sim_handle.hpp"
+#include "lua/thread_contention.hpp"
 
 #include <paddy/errors.hpp>
 #include <paddy/plugin_manager.hpp>
@@ -52,6 +53,13 @@ int newSimulation(lua_State* L) {
   const long long threads = opt.integer("threads", st.threads);
   if (threads < 1) throw InputError("paddy.simulation: threads must be >= 1");
   sim.setThreads(static_cast<int>(threads));
+  if (threads > 1 && !st.contention_checked) {  // once per run, at the first parallel simulation
+    st.contention_checked = true;
+    if (const auto load = currentCpuLoad()) {
+      const std::string warning = contentionWarning(static_cast<int>(threads), *load);
+      if (!warning.empty()) std::fprintf(stderr, "%s\n", warning.c_str());
+    }
+  }
   if (auto skin = opt.optNumber("skin")) sim.setSkinFraction(*skin);
   if (opt.has("sort_interval")) sim.setSortInterval(static_cast<int>(opt.integer("sort_interval", 20)));
   ++st.simulations;

@@ -54,6 +54,7 @@ struct RuntimeState {
   std::set<std::string> models_used;  // "normal:jkr", ...
   RunStats stats;
   int simulations = 0;
+  bool contention_checked = false;  // the busy-cores warning was considered (lua_simulation.cpp)
   std::shared_ptr<PluginManager> plugins;  // loaded on first use
 
   std::shared_ptr<const PluginManager> pluginManager();
