@@ -39,7 +39,7 @@ local P = paddy.parameters{
   {name = "input", default = here .. "/calibration/paddy_mud.json", description = "calibration input file (JSON): targets, factors, design sizes"},
   {name = "strategy", default = "both", choices = {"reference", "surrogate", "both"}, description = "reference procedure, surrogate-based, or both side by side"},
   {name = "quick", default = false, description = "demonstration variant: coarser particles, fewer replicates and seeds (about 10 minutes on 2 cores)"},
-  {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04, description = "slump-test sphere diameter (quick: 0.016 unless set)"},
+  {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04, description = "slump-test sphere diameter (quick: 0.018 unless set)"},
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping; one step for all runs, shortened for the lowest restitution any run may use"},
   {name = "experiment_params", default = "", description = "further experiment parameters for every run, 'name=value,name=value'"},
   {name = "rheometer_particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.02, description = "sphere diameter of the verification rheometer (quick: 0.012 unless set)"},
@@ -61,7 +61,7 @@ local resp = input.responses
 local measured = input.measured
 local particle_diameter, rheometer_diameter = P.particle_diameter, P.rheometer_particle_diameter
 if P.quick then
-  if particle_diameter == 0.010 then particle_diameter = 0.016 end
+  if particle_diameter == 0.010 then particle_diameter = 0.018 end  -- ~10 min at the converged step
   if rheometer_diameter == 0.008 then rheometer_diameter = 0.012 end
   input.box_behnken.replicates, input.box_behnken.center_points = 1, 3
   input.verification.seeds = 2

@@ -48,9 +48,18 @@ for _, row in ipairs((util.read_csv(ref_dir .. "/table3_pb_levels.csv"))) do lev
 for _, h in ipairs(FACTORS) do
   if not levels[h] then error("table3_pb_levels.csv has no row " .. h) end
 end
+-- The centre is computed as the midpoint of the levels, as the calibration computes it
+-- (lib/calibration/input.lua), so that the two share the run's job (the Table 3 centre column
+-- agrees to rounding; a table that disagrees more is an error).
 local function real_level(h, coded)
   local lv = levels[h]
-  if coded == 0 then return lv.center end
+  if coded == 0 then
+    local mid = (lv.low + lv.high) / 2
+    if math.abs(mid - lv.center) > 1e-9 * math.max(1, math.abs(mid)) then
+      error(string.format("table3_pb_levels.csv: %s centre %g is not the midpoint of %g and %g", h, lv.center, lv.low, lv.high))
+    end
+    return mid
+  end
   return coded < 0 and lv.low or lv.high
 end
 
