@@ -102,7 +102,7 @@ local again = c:run()  -- everything done: nothing runs again
 local some = c:run{k3, k1}  -- only these, in this order
 local ok, unknown = pcall(function() return c:run{"0123"} end)
 paddy.result{some_n = #some, some1 = some[1].key == k3, some2 = some[2].key == k1, some_r = some[2].result.twice,
-             unknown_ok = ok, unknown = tostring(unknown),n = #runs, k1 = k1, key1 = runs[1].key, s1 = runs[1].status, r1 = runs[1].result.twice,
+             unknown_ok = ok, unknown = tostring(unknown), n = #runs, k1 = k1, key1 = runs[1].key, s1 = runs[1].status, r1 = runs[1].result.twice,
              seed1 = runs[1].result.seed, r2 = c:result(k2).twice, s3 = runs[3].status,
              e3 = runs[3].error, st2 = c:status(k2), nkeys = #c:keys(), again = #again}
 )lua";

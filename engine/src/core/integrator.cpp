@@ -11,7 +11,7 @@
 // The rotation slows by h R/I per half-step and stops at zero instead of reversing, so a body
 // whose other torques stay below R stays at rest exactly. The explicit form ω += h(T − R ω̂)/I
 // reverses ω every step near rest (chatter of amplitude ~ R dt / I) and lets a loaded body creep
-// at a mean rate that grows with dt (docs/physics.md §5).
+// at a mean rate that grows with dt (docs/physics.md §2.5).
 #include "core/simulation_impl.hpp"
 
 #include <paddy/errors.hpp>

@@ -10,7 +10,7 @@
 // the torque opposes the rotation, can stop it within a step and then holds the body at rest
 // against any other torque up to that sum (the static limit of the law), but never reverses it.
 // Written explicitly (τ from ω̂ of the current step), the torque reverses ω every step near rest
-// and the slump test then depends on dt (docs/physics.md §5). Wall contacts (radius_j = inf):
+// and the slump test then depends on dt (docs/physics.md §2.5). Wall contacts (radius_j = inf):
 // only i is resisted; the wall receives no rolling torque (as in EDEM's type A).
 // Parameter: rolling_friction μ_r ∈ [0, 10]. No history.
 #pragma once
