@@ -4,8 +4,8 @@
 --   paddy run experiments/rheometer.lua --out results/rheometer [--set speeds_rpm=5,10,20 ...]
 --
 -- 1. Fill the steel cup (100 mm inner diameter, 120 mm deep; geometry part "cup") with mud
---    spheres a little above the fill level, let them settle (kinetic-energy criterion), strike off
---    above fill_level.
+--    spheres: poured (random loose in the cup and in a hopper on its rim; lib/pour.lua), let them
+--    settle (kinetic-energy criterion), strike off above fill_level.
 -- 2. Insert the vane (part "vane": 4 blades, 50 mm diameter, 60 mm high, blades from vane_bottom):
 --    the particles overlapping a blade or the shaft are removed, the rest settles briefly.
 -- 3. Turn the vane through the speed steps speeds_rpm, each step_time long; record the axial
@@ -18,7 +18,10 @@
 -- 5. Optional measured_csv (columns speed_rpm,torque_Nm): relative error |T_meas − T_sim| / T_meas
 --    per speed (simulated torque interpolated in ln Ω between the simulated speeds) and the mean.
 local mud = require("lib.mud")
+local pour = require("lib.pour")
+local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
+local rheology = require("lib.rheology")
 local measure = require("paddy.measure")
 
 local P = paddy.parameters(mud.parameters{
@@ -26,6 +29,8 @@ local P = paddy.parameters(mud.parameters{
    description = "mean sphere diameter (reference 0.002; coarse grained above)"},
   {name = "size_spread", default = 0.0, min = 0, max = 0.3, description = "relative std of the diameters (0: monodisperse)"},
   {name = "seed", default = 0, type = "integer", min = 0, max = 2147483647, description = "fill seed (0: --seed)"},
+  {name = "packing", default = "poured", choices = {"poured", "lattice"},
+   description = "fill: poured (random loose spheres in the cup and a hopper on its rim, settled under gravity: amorphous; lib/pour.lua) or lattice (FCC lattice: settles into a crystal, not a mud)"},
   {name = "speeds_rpm", default = "5,10,20,40,80", description = "vane speed steps [rpm], increasing"},
   {name = "step_time", default = 0.5, unit = "s", min = 0.01, max = 100, description = "duration of each speed step"},
   {name = "average_fraction", default = 0.5, min = 0.05, max = 1, description = "steady torque: mean over this last fraction of a step"},
@@ -38,7 +43,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "vane_bottom", default = 0.03, unit = "m", min = 0, max = 1, description = "height of the blades' lower edge above the cup bottom"},
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (the slump test is converged at 0.1, not at 0.2); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
-  {name = "settle_max_time", default = 0.6, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in"},
+  {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in (a poured fill needs at least its fall time plus min_rest_time)"},
   {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
   {name = "insert_time", default = 0.05, unit = "s", min = 0, max = 5, description = "settling after the vane is inserted"},
@@ -67,11 +72,31 @@ sim:add_mesh_wall{name = "cup", material = m_steel, part = "cup",
                   params = {diameter = P.cup_diameter, height = P.cup_height}, motion = {type = "fixed"}}
 
 -- 1. Fill, settle, strike off.
-local filled = sim:fill{
-  region = {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = math.min(P.fill_level * 1.1, P.cup_height)},
-  radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed,
-  packing = "lattice", spacing = 1.02, jitter = 0.5,
-}
+-- poured: random loose spheres in the cup and a hopper on its rim (lib/pour.lua); lattice: FCC
+-- lattice up to 1.1 fill_level. Both are struck off at fill_level after settling.
+if P.fill_level > P.cup_height then
+  error(string.format("fill_level = %g m is above the cup: allowed fill_level <= cup_height = %g m", P.fill_level, P.cup_height))
+end
+local filled, poured
+if P.packing == "poured" then
+  poured = pour.fill(sim, {
+    region = {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = P.cup_height},
+    rim_radius = R_cup, radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed, wall_material = m_steel,
+  })
+  filled = poured.filled
+  local fall = pour.fall_time(poured.top_z)
+  if P.settle_max_time < fall + P.min_rest_time then
+    error(string.format("settle_max_time = %g s is too short for the poured fill: the spheres fall from %.2f m "
+                        .. "(%.2f s) and settling needs min_rest_time = %g s more; allowed: settle_max_time >= %.2f s",
+                        P.settle_max_time, poured.top_z, fall, P.min_rest_time, fall + P.min_rest_time))
+  end
+else
+  filled = sim:fill{
+    region = {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = math.min(P.fill_level * 1.1, P.cup_height)},
+    radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed,
+    packing = "lattice", spacing = 1.02, jitter = 0.5,
+  }
+end
 local dt_fraction, dt_damping_factor = P.timestep_fraction, 1
 if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params) end
 local dt = sim:timestep{fraction = dt_fraction}
@@ -83,6 +108,16 @@ sim:run{duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_ev
         callback = function(s) return not (s:time() - t0 >= P.min_rest_time and util.rms_speed(s, mass) < P.rest_speed) end}
 local settle_time = sim:time() - t0
 local struck = sim:remove_if(function(i, x, y, z, r) return z + r > P.fill_level end)
+if poured then pour.remove_hopper(sim, poured) end
+local fill_solid = 0
+for _, r in ipairs(sim:radii()) do fill_solid = fill_solid + 4 / 3 * math.pi * r ^ 3 end
+fill_solid = fill_solid / (math.pi * R_cup ^ 2 * P.fill_level)
+local structure, structure_note = fill_structure.measure(sim, {z_min = 2 * d, z_max = P.fill_level - 2 * d,
+  radius_bottom = R_cup - 2 * d, radius_top = R_cup - 2 * d})
+if structure and structure.crystalline then
+  io.stderr:write(string.format("warning: rheometer: the fill is crystalline (%.0f %% of the core's spheres have 10 or more neighbours, solid fraction %.3f): "
+                                .. "it resists shear like no mud; use packing = poured\n", 100 * structure.neighbours_10_or_more, structure.solid_fraction))
+end
 
 -- 2. The vane: remove the particles overlapping its blades (slabs along 0°, 90°, ... from the
 -- shaft to the tips) or its shaft, then add it.
@@ -153,7 +188,7 @@ end
 -- 4. Flow curve and Herschel–Bulkley fit.
 local vane_geometry = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2}
 local ok, curve = pcall(measure.vane_flow_curve, {vane = vane_geometry, omega = omegas, torque = torques})
-local fit, fit_error, fit_warning = nil, nil, nil
+local fit, fit_error, fit_warning, rate_share = nil, nil, nil, nil
 if ok then
   fit = curve.fit
   for k, s in ipairs(steps) do
@@ -162,14 +197,10 @@ if ok then
     s.n_local = curve.n_local[k]
     s.hb_torque_Nm = measure.vane_torque_hb(vane_geometry, fit, s.omega)
   end
-  -- A fit at the lower bound of n (or with no explained variance) is not a flow curve: the torque
-  -- does not grow with the speed, and Herschel-Bulkley can only return its mean as tau0.
-  local rising = torques[#torques] > torques[1]
-  if fit.n <= 0.05 + 1e-6 or fit.r2 < 0.5 or not rising then
-    fit_warning = string.format("the steady torque %s with the speed (%.3g N m at %g rpm, %.3g N m at %g rpm); the "
-                                .. "Herschel-Bulkley fit (n = %.3g, R^2 = %.2f) describes a yield stress, not a flow curve",
-                                rising and "barely grows" or "does not grow", torques[1], speeds[1], torques[#torques],
-                                speeds[#speeds], fit.n, fit.r2)
+  -- A flow curve only if the torque rises and the rate carries a share of the stress
+  -- (lib/rheology.lua).
+  fit_warning, rate_share = rheology.flow_curve_warning(steps, fit)
+  if fit_warning then
     io.stderr:write("warning: rheometer: ", fit_warning, "\n")
   end
 else
@@ -249,10 +280,14 @@ paddy.result{
   herschel_bulkley = fit,
   fit_error = fit_error,
   fit_warning = fit_warning,
+  rate_dependent_share = rate_share,    -- K D_max^n / (tau0 + K D_max^n) of the fit (lib/rheology.lua)
   comparison = comparison,
   vane = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2,
           bottom = z_vane, torque_factor_m3 = measure.vane_torque_factor(vane_geometry)},
-  particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed,
+  particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed, packing = P.packing,
+  fill_solid_fraction = fill_solid,   -- sphere volume / cup volume below fill_level, before the vane goes in
+  hopper_height_m = poured and poured.hopper_height or nil,
+  fill_structure = structure or {note = structure_note},
   settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),
@@ -275,9 +310,4 @@ if comparison then
   print(string.format("against %s: mean relative error %.1f %%, largest %.1f %%", comparison.file,
                       100 * comparison.mean_relative_error, 100 * comparison.max_relative_error))
 end
-print("results     " .. util.out("result.json"))
-local shown = {}
-for _, name in ipairs{"torque", "flow_curve"} do
-  if pictures[name] then shown[#shown + 1] = pictures[name] end
-end
-if #shown > 0 then print("pictures    " .. table.concat(shown, "\n            ")) end
+util.print_outputs(pictures, {"torque", "flow_curve"})

@@ -4,9 +4,10 @@
 --   paddy run experiments/slump.lua --out results/slump [--set particle_diameter=0.008 ...]
 --
 -- 1. Fill the steel cone (inner diameters 100/200 mm, 300 mm high) standing on a steel plate
---    with mud spheres (lattice or random, seeded; monodisperse or normal sizes), a little above
---    the rim; let them settle inside the fixed cone until at rest (kinetic-energy criterion);
---    strike off the excess above the rim, as the standard prescribes.
+--    with mud spheres (seeded; monodisperse or normal sizes), poured: placed at random, loose, in
+--    the cone and in a hopper on its rim (lib/pour.lua); let them settle inside the fixed cone
+--    until at rest (kinetic-energy criterion); strike off the excess above the rim, as the
+--    standard prescribes.
 -- 2. Lift the cone at lift_speed. The lift stops when the cone's bottom edge is `clearance`
 --    above the highest particle under it (the cone is then free of the pile; lifting it further
 --    would only cost time: 300 mm at 0.05 m/s = 6 s).
@@ -21,23 +22,26 @@
 -- cone = "none" releases the cone-shaped column at once (no cone wall, no settling): the limit of
 -- an infinitely fast lift, and a test of the measurements without mesh walls.
 local mud = require("lib.mud")
+local pour = require("lib.pour")
+local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
 
 local P = paddy.parameters(mud.parameters{
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04,
    description = "mean sphere diameter (reference 0.002; coarse grained above)"},
   {name = "size_spread", default = 0.0, min = 0, max = 0.3, description = "relative std of the diameters, normal, truncated at 2 std (0: monodisperse)"},
-  {name = "packing", default = "lattice", choices = {"lattice", "random"}, description = "initial packing of the fill"},
+  {name = "packing", default = "poured", choices = {"poured", "lattice", "random"},
+   description = "fill: poured (random loose spheres in the cone and a hopper on its rim, settled under gravity: amorphous; lib/pour.lua), lattice (FCC lattice: settles into a crystal, not a mud), random (random loose, cone=none only)"},
   {name = "seed", default = 0, type = "integer", min = 0, max = 2147483647, description = "fill seed (0: --seed)"},
   {name = "lift_speed", default = 0.05, unit = "m/s", min = 0.001, max = 2, description = "cone lift speed"},
   {name = "cone", default = "mesh", choices = {"mesh", "none"}, description = "mesh: lift the steel cone; none: release the column at once"},
   {name = "cone_height", default = 0.3, unit = "m", min = 0.01, max = 1, description = "cone height (GB/T 50080: 0.3)"},
   {name = "cone_top_diameter", default = 0.1, unit = "m", min = 0.01, max = 1, description = "cone top inner diameter"},
   {name = "cone_bottom_diameter", default = 0.2, unit = "m", min = 0.01, max = 1, description = "cone bottom inner diameter"},
-  {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "fill this fraction of the height above the rim, struck off after settling"},
+  {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "packing=lattice: fill this fraction of the height above the rim, struck off after settling"},
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (converged at 0.1; 0.2 is stable but not converged with this JKR mud, 0.3 unstable); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
-  {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone"},
+  {name = "settle_max_time", default = 2.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone (a poured fill needs at least its fall time plus min_rest_time)"},
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
   {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
   {name = "slump_tolerance", default = 0.001, unit = "m", min = 0, max = 0.1, description = "see rest_window (0: KE criterion only)"},
@@ -75,26 +79,47 @@ if P.cone == "mesh" then
   }
 end
 
--- Fill: the cone's inside, extended by `overfill` above the rim with the same taper when the cone
--- holds the mud (struck off after settling).
-local fill_h = P.cone == "mesh" and H * (1 + P.overfill) or H
-local fill_r_top = R_bottom + (R_top - R_bottom) * fill_h / H
-local fill = {
-  region = {type = "cone", base = {0, 0, 0}, radius_bottom = R_bottom, radius_top = fill_r_top, height = fill_h},
-  radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed,
-}
-if P.packing == "lattice" then
-  fill.packing, fill.spacing, fill.jitter = "lattice", 1.02, 0.5
-else
-  fill.packing, fill.volume_fraction = "random", 0.5
+-- Fill. poured: random loose spheres in the cone and in a hopper on its rim, settled (lib/pour.lua);
+-- lattice: the cone's inside, extended by `overfill` above the rim with the same taper; both are
+-- struck off at the rim after settling. cone = none: the cone-shaped column itself.
+if P.packing == "poured" and not cone then
+  error("packing = poured needs the cone (cone = mesh); with cone = none use packing = lattice or random")
 end
-local filled, solid_fraction = sim:fill(fill)
+local radius = mud.radius(d, P.size_spread)
+local filled, solid_fraction, poured
+if P.packing == "poured" then
+  poured = pour.fill(sim, {
+    region = {type = "cone", base = {0, 0, 0}, radius_bottom = R_bottom, radius_top = R_top, height = H},
+    rim_radius = R_top, radius = radius, material = m_mud, seed = seed, wall_material = m_steel,
+  })
+  filled, solid_fraction = poured.filled, poured.loose_fraction
+  local fall = pour.fall_time(poured.top_z)
+  if P.settle_max_time < fall + P.min_rest_time then
+    error(string.format("settle_max_time = %g s is too short for the poured fill: the spheres fall from %.2f m "
+                        .. "(%.2f s) and settling needs min_rest_time = %g s more; allowed: settle_max_time >= %.2f s",
+                        P.settle_max_time, poured.top_z, fall, P.min_rest_time, fall + P.min_rest_time))
+  end
+else
+  local fill_h = cone and H * (1 + P.overfill) or H
+  local fill = {
+    region = {type = "cone", base = {0, 0, 0}, radius_bottom = R_bottom,
+              radius_top = R_bottom + (R_top - R_bottom) * fill_h / H, height = fill_h},
+    radius = radius, material = m_mud, seed = seed,
+  }
+  if P.packing == "lattice" then
+    fill.packing, fill.spacing, fill.jitter = "lattice", 1.02, 0.5
+  else
+    fill.packing, fill.volume_fraction = "random", 0.5
+  end
+  filled, solid_fraction = sim:fill(fill)
+end
 local dt_fraction, dt_damping_factor = P.timestep_fraction, 1
 if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params) end
 local dt = sim:timestep{fraction = dt_fraction}
 local mass = util.total_mass(sim, P.mud_density)
-io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n",
-                              filled, d * 1000, cg.alpha, dt))
+io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s%s\n",
+                              filled, d * 1000, cg.alpha, dt,
+                              poured and string.format(", poured from %.2f m", poured.top_z) or ""))
 
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 
@@ -132,9 +157,24 @@ if cone then
   }
   settle_time = sim:time() - t0
   struck = sim:remove_if(function(i, x, y, z, r) return z + r > H end)
+  if poured then pour.remove_hopper(sim, poured) end
   mass = util.total_mass(sim, P.mud_density)
 end
 local particles = sim:count()
+-- Solid fraction of the fill as the lift starts: sphere volume / cone volume (the bulk density of
+-- the simulated mud is this times the particle density).
+local fill_solid = 0
+for _, r in ipairs(sim:radii()) do fill_solid = fill_solid + 4 / 3 * math.pi * r ^ 3 end
+fill_solid = fill_solid / pour.region_volume{type = "cone", radius_bottom = R_bottom, radius_top = R_top, height = H}
+-- Its structure two diameters away from the walls (lib/fill_structure.lua): a random packing, or
+-- a crystal (which no mud is)?
+local function cone_radius(z) return R_bottom + (R_top - R_bottom) * z / H end
+local structure, structure_note = fill_structure.measure(sim, {z_min = 2 * d, z_max = H - 2 * d,
+  radius_bottom = cone_radius(2 * d) - 2 * d, radius_top = cone_radius(H - 2 * d) - 2 * d})
+if structure and structure.crystalline then
+  io.stderr:write(string.format("warning: slump: the fill is crystalline (%.0f %% of the core's spheres have 10 or more neighbours, solid fraction %.3f): "
+                                .. "it resists shear like no mud; use packing = poured\n", 100 * structure.neighbours_10_or_more, structure.solid_fraction))
+end
 local function measure_slump()
   return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
 end
@@ -153,7 +193,10 @@ local function sample(s)
   local t = s:time()
   local v = util.rms_speed(s, mass)
   local cone_z = cone and P.lift_speed * ((lift_stop or t) - t_lift) or nil
-  history[#history + 1] = {t = t - t_lift, slump_mm = measure_slump().slump * 1000, rms_speed = v,
+  -- The spread as the final measurement reads it (image + circle fit; milliseconds per sample).
+  local spread = sim:measure_slump_flow{axis = {0, 0}, base_z = 0, pixel = P.pixel}
+  history[#history + 1] = {t = t - t_lift, slump_mm = measure_slump().slump * 1000,
+                           slump_flow_mm = spread.diameter_fit * 1000, rms_speed = v,
                            cone_bottom_mm = cone_z and cone_z * 1000 or nil}
   if not lift_stop then
     if cone_z > top_under_cone() + P.clearance then
@@ -234,17 +277,20 @@ e]], final.slump * 1000, flow.diameter_fit * 1000, math.max(300, flow.diameter_f
      H * 1000 * 1.1, util.out("side_view.dat"), util.out("profile.dat"), util.out("profile.dat"),
      R_bottom * 1000, R_top * 1000, H * 1000, R_top * 1000, H * 1000, R_bottom * 1000))
   local hist = {}
-  for k, h in ipairs(history) do hist[k] = {h.t, h.slump_mm, h.cone_bottom_mm or 0} end
-  util.write_columns("slump_history.dat", "t_s slump_mm cone_bottom_mm", hist)
+  for k, h in ipairs(history) do hist[k] = {h.t, h.slump_mm, h.cone_bottom_mm or 0, h.slump_flow_mm} end
+  util.write_columns("slump_history.dat", "t_s slump_mm cone_bottom_mm slump_flow_mm", hist)
+  local dat = util.out("slump_history.dat")
   pictures.slump_history = util.gnuplot("slump_history", string.format([[
-set title 'Slump against time (t = 0: start of the lift)'
-set xlabel 't [s]'; set ylabel '[mm]'; set grid; set key bottom right
+set title 'Slump and slump-flow against time (t = 0: start of the lift)'
+set xlabel 't [s]'; set ylabel '[mm]'; set grid; set key outside right
 %s
-plot '%s' using 1:2 with linespoints pt 7 ps 0.5 title 'slump', \
-     '%s' using 1:3 with lines dt 2 title 'cone bottom above the plate'%s]],
+plot '%s' using 1:2 with linespoints pt 7 ps 0.5 lc rgb '#1f77b4' title 'slump', \
+     '%s' using 1:4 with linespoints pt 5 ps 0.4 lc rgb '#8b5a2b' title 'slump-flow (circle fit)', \
+     '%s' using 1:3 with lines dt 2 lc rgb 'black' title 'cone bottom above the plate', \
+     231 with lines lc rgb '#1f77b4' dt 3 title 'measured slump 231 mm', \
+     480 with lines lc rgb '#8b5a2b' dt 3 title 'measured slump-flow 480 mm']],
     lift_stop and string.format("set arrow from %g, graph 0 to %g, graph 1 nohead lc rgb 'gray'", lift_stop - t_lift, lift_stop - t_lift) or "",
-    util.out("slump_history.dat"), util.out("slump_history.dat"),
-    string.format(", %g with lines lc rgb 'red' title 'measured 231 mm'", 231)))
+    dat, dat, dat))
 end
 
 local reference_params = {}
@@ -268,7 +314,11 @@ paddy.result{
   lift_stop_s = lift_stop and lift_stop - t_lift or nil,
   cone_lift_mm = cone and P.lift_speed * ((lift_stop or sim:time()) - t_lift) * 1000 or 0,
   settle_time_s = settle_time,
-  particles = particles, filled = filled, struck_off = struck, fill_solid_fraction = solid_fraction,
+  particles = particles, filled = filled, struck_off = struck, packing = P.packing,
+  fill_solid_fraction = fill_solid,          -- in the cone as the lift starts
+  fill_initial_solid_fraction = solid_fraction,  -- as placed (poured: the loose spheres in the cone)
+  hopper_height_m = poured and poured.hopper_height or nil,
+  fill_structure = structure or {note = structure_note},  -- core solid fraction, neighbours, g(sqrt2 d), crystalline (lib/fill_structure.lua)
   time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),
@@ -285,10 +335,5 @@ print(string.format("slump       %6.1f mm   (%s)", final.slump * 1000, versus(fi
 print(string.format("slump-flow  %6.1f mm   circle fit; ruler %.1f mm   (%s)", flow.diameter_fit * 1000,
                     flow.ruler.mean * 1000, versus(flow.diameter_fit * 1000, 480)))
 if not at_rest then print("            (the pile was not at rest at max_time: see the warning above)") end
-print("results     " .. util.out("result.json"))
-local shown = {}
-for _, name in ipairs{"side_view", "top_view", "slump_history"} do
-  if pictures[name] then shown[#shown + 1] = pictures[name] end
-end
-if #shown > 0 then print("pictures    " .. table.concat(shown, "\n            ")) end
+util.print_outputs(pictures, {"side_view", "top_view", "slump_history"})
 if snapshot_every then print("ParaView    " .. util.out("snapshots/particles.xmf")) end

@@ -146,6 +146,17 @@ function M.gnuplot(stem, script)
   return png
 end
 
+-- The closing lines of an experiment on stdout: where result.json is, then the pictures that were
+-- drawn (names in `order`, looked up in `pictures`; missing ones skipped), one per line.
+function M.print_outputs(pictures, order)
+  print("results     " .. M.out("result.json"))
+  local shown = {}
+  for _, name in ipairs(order) do
+    if pictures[name] then shown[#shown + 1] = pictures[name] end
+  end
+  if #shown > 0 then print("pictures    " .. table.concat(shown, "\n            ")) end
+end
+
 -- Mean of values[i] for i in [first, last].
 function M.mean(values, first, last)
   local s, n = 0, 0

@@ -19,8 +19,8 @@ out="$work/out"
 args=(run "$src/experiments/calibrate_paddy_mud.lua" --threads 2 --seed 3
       --set "input=$src/tests/calibration/mini_mud.json" --set particle_diameter=0.04
       --set rheometer_particle_diameter=0.02 --set executor="$executor" --set threads_per_job=1
-      --set "experiment_params=max_time=1.5,settle_max_time=0.3"
-      --set "rheometer_params=speeds_rpm=10;20;40,step_time=0.1,settle_max_time=0.1,insert_time=0.02")
+      --set "experiment_params=max_time=1.5,settle_max_time=1.5"
+      --set "rheometer_params=speeds_rpm=10;20;40,step_time=0.1,settle_max_time=0.6,insert_time=0.02")
 [ "$executor" = slurm ] && args+=(--set strategy=reference --set slurm_poll_interval=1 --set max_parallel=2)
 fail() { echo "calibration_e2e: FAIL: $*" >&2; exit 1; }
 finished() { find "$out/campaign/jobs" -name result.json -printf '%P %T@\n' 2>/dev/null | sort; }

@@ -69,13 +69,23 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
+elseif(CASE STREQUAL "rheology_share")
+  run_paddy(code se run ${HERE}/rheology_share.lua --out out --threads 1)
+  expect_code(${code} 0)
+  result(ok ok)
+
+elseif(CASE STREQUAL "fill_structure")
+  run_paddy(code se run ${HERE}/fill_structure.lua --out out --threads 1)
+  expect_code(${code} 0)
+  result(ok ok)
+
 elseif(CASE STREQUAL "timestep_damping")
   run_paddy(code se run ${HERE}/timestep_damping.lua --out out --threads 1)
   expect_code(${code} 0)
   result(ok ok)
   # A strongly damped slump (e = 0.01) runs at the shortened step (0.804 x slump.lua's default 0.1)
   # and records it.
-  run_paddy(code se run ${SOURCE}/experiments/slump.lua --out slump --threads 1 --set cone=none
+  run_paddy(code se run ${SOURCE}/experiments/slump.lua --out slump --threads 1 --set cone=none --set packing=lattice
             --set particle_diameter=0.03 --set max_time=0.05 --set pictures=false --set snapshot_interval=0
             --set progress=false --set mud_mud_restitution=0.01)
   expect_code(${code} 0)
@@ -116,7 +126,7 @@ elseif(CASE STREQUAL "slump_mini")
   #    still inside the cone is at most 200 mm, so more means the pile spread out;
   #  - all particles are still there, the history has samples and the pictures exist.
   run_paddy(code se run ${SOURCE}/experiments/slump.lua --out out --threads 1 --seed 3
-            --set particle_diameter=0.022 --set settle_max_time=0.4 --set min_rest_time=0.2
+            --set particle_diameter=0.022 --set settle_max_time=1.0 --set min_rest_time=0.2
             --set max_time=4 --set history_interval=0.05 --set snapshot_interval=1 --set rest_speed=0.01)
   expect_code(${code} 0)
   result(slump slump_mm)
@@ -141,6 +151,19 @@ elseif(CASE STREQUAL "slump_mini")
   endforeach()
   expect_number(${slump} GREATER 20 "slump_mm")
   expect_number(${slump} LESS 300 "slump_mm")
+  # The poured fill (lib/pour.lua): fills the cone to the rim as a random packing, not a crystal.
+  result(packing packing)
+  result(cryst fill_structure crystalline)
+  result(phi fill_solid_fraction)
+  result(hopper hopper_height_m)
+  result(spread0 history 1 slump_flow_mm)
+  if(NOT packing STREQUAL "poured" OR NOT cryst STREQUAL "OFF")
+    message(FATAL_ERROR "default fill: packing ${packing}, crystalline ${cryst} (expected poured, not crystalline)")
+  endif()
+  expect_number(${phi} GREATER 0.4 "fill_solid_fraction")
+  expect_number(${phi} LESS 0.64 "fill_solid_fraction")
+  expect_number(${hopper} GREATER 0.1 "hopper_height_m")
+  expect_number(${spread0} GREATER 100 "history slump_flow_mm")
   expect_number(${flow} GREATER 222 "slump_flow_mm")
   expect_number(${ruler} GREATER 222 "slump_flow_ruler_mm")
   expect_number(${n} GREATER 300 "particles")
@@ -158,7 +181,7 @@ elseif(CASE STREQUAL "rheometer_mini")
   # torque at every speed and the Herschel-Bulkley fit must give finite parameters.
   run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
             --set particle_diameter=0.012 --set speeds_rpm=20,40,80 --set step_time=0.15
-            --set settle_max_time=0.3 --set min_rest_time=0.1 --set sample_interval=0.005
+            --set settle_max_time=0.6 --set min_rest_time=0.1 --set sample_interval=0.005
             --set snapshot_interval=0)
   expect_code(${code} 0)
   foreach(k 0 1 2)
@@ -199,7 +222,7 @@ elseif(CASE STREQUAL "validation_pb")
   # released without a cone, 0.3 s): every run finishes, both fits (EDEM from Table 4 and Paddy)
   # exist, the EDEM fit reproduces the reference's Table 5 (H5 slump-flow coefficient -58.00,
   # p < 0.0001), the files exist, and a second invocation resumes without running a job again.
-  set(tiny "cone=none,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false")
+  set(tiny "cone=none,packing=lattice,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false")
   set(args run ${SOURCE}/experiments/validation/plackett_burman.lua --out out --threads 1
       --set particle_diameter=0.04 --set max_parallel=2 --set threads_per_job=1
       --set reference_dir=${SOURCE}/../shared/reference --set slump_set=${tiny})
@@ -233,7 +256,7 @@ elseif(CASE STREQUAL "validation_cg")
   # std, the tests and the pictures.
   run_paddy(code se run ${SOURCE}/experiments/validation/coarse_graining.lua --out out --threads 1
             --set diameters=0.03,0.04 --set seeds=1,2 --set max_parallel=2 --set threads_per_job=1
-            --set slump_set=cone=none,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false)
+            --set slump_set=cone=none,packing=lattice,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false)
   expect_code(${code} 0)
   result(n finished)
   expect_number(${n} GREATER 3.5 "finished runs")

@@ -1,0 +1,80 @@
+-- Poured fill of a container (the slump cone, the rheometer cup): spheres placed at random, loose,
+-- in the container and in an open tube (hopper) standing on its rim, then left to fall and settle
+-- under gravity; the script strikes off what stands above the rim. The result is an amorphous
+-- packing, like the particle factories of EDEM and LIGGGHTS fill a container.
+--
+-- Why not a lattice: spheres placed on a face-centred cubic lattice (sim:fill packing="lattice",
+-- spacing 1.02) settle by less than their 2 % gap and stay a crystal. In the slump cone its core
+-- packs at solid fraction 0.71 with the √2·d peak of the FCC lattice in g(r) (10 mm spheres); a
+-- random packing of frictional spheres cannot exceed 0.64 (random close packing; Scott & Kilgour
+-- 1969, J. Phys. D 2:863), and a crystal resists shear like no mud does. docs/physics.md, "Fill".
+--
+-- Loose placement: random sequential addition (sim:fill packing="random") reaches a solid fraction
+-- of about 0.3 before it jams (the limit is 0.38; Feder 1980, J. Theor. Biol. 87:237). The settled
+-- packing holds at most `solid_fraction` (default 0.64), so the hopper is made tall enough that
+-- `margin` more than a fill at that fraction lands in the container: it is always full to the rim.
+local M = {}
+
+M.loose_fraction = 0.35   -- asked of the random placement (it jams near 0.3)
+M.solid_fraction = 0.64   -- the densest the settled fill can be (random close packing)
+M.margin = 0.1            -- extra loose spheres beyond a fill at solid_fraction
+
+-- Volume of a fill region (sim:fill's cone or cylinder, axis +z).
+function M.region_volume(region)
+  if region.type == "cylinder" then return math.pi * region.radius ^ 2 * region.height end
+  if region.type == "cone" then
+    local a, b = region.radius_bottom, region.radius_top
+    return math.pi * region.height / 3 * (a * a + a * b + b * b)
+  end
+  error("lib/pour.lua: region type '" .. tostring(region.type) .. "' is not one of cone, cylinder", 2)
+end
+
+-- Free-fall time of the highest loose sphere onto the floor of the container: a lower bound of the
+-- settling time.
+function M.fall_time(top_z, g)
+  return math.sqrt(2 * top_z / (g or 9.81))
+end
+
+-- spec: region (the container's inside up to its rim, base at z = base_z), rim_radius (radius of
+-- the opening at the rim), radius (sim:fill radius option), material, seed, wall_material (the
+-- hopper), part ("slump_cone": an open tube when both diameters are equal), optional
+-- solid_fraction, margin, loose_fraction.
+-- Returns {filled =, loose_fraction = (placed in the container), hopper = wall or nil,
+--          hopper_height =, top_z = (top of the loose spheres)}.
+function M.fill(sim, spec)
+  local region = spec.region
+  local base_z = region.base[3]
+  local rim_z = base_z + region.height
+  local phi_solid = spec.solid_fraction or M.solid_fraction
+  local margin = spec.margin or M.margin
+  local loose = spec.loose_fraction or M.loose_fraction
+  local n, phi0 = sim:fill{region = region, radius = spec.radius, material = spec.material, seed = spec.seed,
+                           packing = "random", volume_fraction = loose}
+  if not (phi0 > 0) then error("lib/pour.lua: no sphere fits in the container", 2) end
+  -- The settled fill needs (1 + margin)·phi_solid·V of solid; the container holds phi0·V loose.
+  local V = M.region_volume(region)
+  local missing = ((1 + margin) * phi_solid - phi0) * V
+  local out = {filled = n, loose_fraction = phi0, hopper_height = 0, top_z = rim_z}
+  if missing <= 0 then return out end
+  local area = math.pi * spec.rim_radius ^ 2
+  local h = missing / (phi0 * area)
+  out.hopper = sim:add_mesh_wall{
+    name = "hopper", material = spec.wall_material, part = spec.part or "slump_cone",
+    params = {top_diameter = 2 * spec.rim_radius, bottom_diameter = 2 * spec.rim_radius, height = h},
+    translate = {region.base[1], region.base[2], rim_z}, motion = {type = "fixed"},
+  }
+  local n2 = sim:fill{region = {type = "cylinder", base = {region.base[1], region.base[2], rim_z}, radius = spec.rim_radius,
+                                height = h},
+                      radius = spec.radius, material = spec.material, seed = spec.seed + 1, packing = "random",
+                      volume_fraction = loose}
+  out.filled, out.hopper_height, out.top_z = n + n2, h, rim_z + h
+  return out
+end
+
+-- After the strike-off nothing is left in the hopper: send it up and away from the experiment (the
+-- engine has no wall removal; a wall far away costs nothing).
+function M.remove_hopper(sim, fill)
+  if fill.hopper then sim:set_motion(fill.hopper, {type = "translate", velocity = {0, 0, 2.0}}) end
+end
+
+return M
