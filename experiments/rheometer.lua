@@ -84,12 +84,7 @@ if P.packing == "poured" then
     rim_radius = R_cup, radius = mud.radius(d, P.size_spread), material = m_mud, seed = seed, wall_material = m_steel,
   })
   filled = poured.filled
-  local fall = pour.fall_time(poured.top_z)
-  if P.settle_max_time < fall + P.min_rest_time then
-    error(string.format("settle_max_time = %g s is too short for the poured fill: the spheres fall from %.2f m "
-                        .. "(%.2f s) and settling needs min_rest_time = %g s more; allowed: settle_max_time >= %.2f s",
-                        P.settle_max_time, poured.top_z, fall, P.min_rest_time, fall + P.min_rest_time))
-  end
+  pour.check_settle_time("rheometer", poured, P.settle_max_time, P.min_rest_time)
 else
   filled = sim:fill{
     region = {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = math.min(P.fill_level * 1.1, P.cup_height)},
@@ -114,10 +109,7 @@ for _, r in ipairs(sim:radii()) do fill_solid = fill_solid + 4 / 3 * math.pi * r
 fill_solid = fill_solid / (math.pi * R_cup ^ 2 * P.fill_level)
 local structure, structure_note = fill_structure.measure(sim, {z_min = 2 * d, z_max = P.fill_level - 2 * d,
   radius_bottom = R_cup - 2 * d, radius_top = R_cup - 2 * d})
-if structure and structure.crystalline then
-  io.stderr:write(string.format("warning: rheometer: the fill is crystalline (%.0f %% of the core's spheres have 10 or more neighbours, solid fraction %.3f): "
-                                .. "it resists shear like no mud; use packing = poured\n", 100 * structure.neighbours_10_or_more, structure.solid_fraction))
-end
+fill_structure.warn_if_crystalline("rheometer", structure)
 
 -- 2. The vane: remove the particles overlapping its blades (slabs along 0°, 90°, ... from the
 -- shaft to the tips) or its shaft, then add it.

@@ -93,12 +93,7 @@ if P.packing == "poured" then
     rim_radius = R_top, radius = radius, material = m_mud, seed = seed, wall_material = m_steel,
   })
   filled, solid_fraction = poured.filled, poured.loose_fraction
-  local fall = pour.fall_time(poured.top_z)
-  if P.settle_max_time < fall + P.min_rest_time then
-    error(string.format("settle_max_time = %g s is too short for the poured fill: the spheres fall from %.2f m "
-                        .. "(%.2f s) and settling needs min_rest_time = %g s more; allowed: settle_max_time >= %.2f s",
-                        P.settle_max_time, poured.top_z, fall, P.min_rest_time, fall + P.min_rest_time))
-  end
+  pour.check_settle_time("slump", poured, P.settle_max_time, P.min_rest_time)
 else
   local fill_h = cone and H * (1 + P.overfill) or H
   local fill = {
@@ -171,10 +166,7 @@ fill_solid = fill_solid / pour.region_volume{type = "cone", radius_bottom = R_bo
 local function cone_radius(z) return R_bottom + (R_top - R_bottom) * z / H end
 local structure, structure_note = fill_structure.measure(sim, {z_min = 2 * d, z_max = H - 2 * d,
   radius_bottom = cone_radius(2 * d) - 2 * d, radius_top = cone_radius(H - 2 * d) - 2 * d})
-if structure and structure.crystalline then
-  io.stderr:write(string.format("warning: slump: the fill is crystalline (%.0f %% of the core's spheres have 10 or more neighbours, solid fraction %.3f): "
-                                .. "it resists shear like no mud; use packing = poured\n", 100 * structure.neighbours_10_or_more, structure.solid_fraction))
-end
+fill_structure.warn_if_crystalline("slump", structure)
 local function measure_slump()
   return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
 end

@@ -113,4 +113,13 @@ function M.measure(sim, core)
   }
 end
 
+-- Warns on stderr when a measured fill is crystalline; `who` names the script.
+function M.warn_if_crystalline(who, structure)
+  if structure and structure.crystalline then
+    io.stderr:write(string.format("warning: %s: the fill is crystalline (%.0f %% of the core's spheres have 10 or more "
+                                  .. "neighbours, solid fraction %.3f): it resists shear like no mud; use packing = poured\n",
+                                  who, 100 * structure.neighbours_10_or_more, structure.solid_fraction))
+  end
+end
+
 return M

@@ -71,6 +71,17 @@ function M.fill(sim, spec)
   return out
 end
 
+-- Refuses a settling time too short for the pour to land: the free fall from the top of the
+-- loose spheres plus the shortest settling (min_rest_time). `who` names the script.
+function M.check_settle_time(who, fill, settle_max_time, min_rest_time)
+  local fall = M.fall_time(fill.top_z)
+  if settle_max_time < fall + min_rest_time then
+    error(string.format("%s: settle_max_time = %g s is too short for the poured fill: the spheres fall from %.2f m "
+                        .. "(%.2f s) and settling needs min_rest_time = %g s more; allowed: settle_max_time >= %.2f s",
+                        who, settle_max_time, fill.top_z, fall, min_rest_time, fall + min_rest_time), 2)
+  end
+end
+
 -- After the strike-off nothing is left in the hopper: send it up and away from the experiment (the
 -- engine has no wall removal; a wall far away costs nothing).
 function M.remove_hopper(sim, fill)

@@ -164,6 +164,13 @@ elseif(CASE STREQUAL "slump_mini")
   expect_number(${phi} LESS 0.64 "fill_solid_fraction")
   expect_number(${hopper} GREATER 0.1 "hopper_height_m")
   expect_number(${spread0} GREATER 100 "history slump_flow_mm")
+  # A settling time shorter than the pour's fall is refused at the script's line, with the minimum.
+  run_paddy(code se run ${SOURCE}/experiments/slump.lua --out short --threads 1 --set particle_diameter=0.022
+            --set settle_max_time=0.2)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "slump\\.lua:[0-9]+: slump: settle_max_time = 0\\.2 s is too short.*allowed: settle_max_time >= [0-9.]+ s")
+    message(FATAL_ERROR "the short settling is not refused with file, line and minimum:\n${se}")
+  endif()
   expect_number(${flow} GREATER 222 "slump_flow_mm")
   expect_number(${ruler} GREATER 222 "slump_flow_ruler_mm")
   expect_number(${n} GREATER 300 "particles")
