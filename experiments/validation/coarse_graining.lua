@@ -55,7 +55,8 @@ local t0 = os.time()
 local results = c:run()
 
 -- Collect: one row per run; per size the lists of each response.
-local RESPONSES = {"slump_mm", "slump_flow_mm", "slump_flow_ruler_mm", "slump_flow_area_mm", "edge_ring_h_mm"}
+local RESPONSES = {"slump_mm", "slump_flow_mm", "slump_flow_ruler_mm", "slump_flow_area_mm", "edge_ring_h_mm",
+                   "fill_solid_fraction"}
 local runs, failed, by_size, profiles = {}, {}, {}, {}
 for i, run in ipairs(results) do
   local j = jobs[i]
@@ -79,7 +80,8 @@ end
 
 local run_cols = {"d_mm", "alpha", "seed", "slump_mm", "slump_flow_mm", "slump_flow_ruler_mm", "slump_flow_area_mm",
                   "circle_rms_mm", "edge_ring_r_mm", "edge_ring_h_mm", "particles", "pile_particles", "loose_particles",
-                  "at_rest", "rest_time_s", "lift_stop_s", "simulated_time_s", "wall_time_s", "threads", "status", "key"}
+                  "at_rest", "rest_time_s", "lift_stop_s", "simulated_time_s", "wall_time_s", "threads",
+                  "fill_solid_fraction", "core_solid_fraction", "core_neighbours", "core_share_10_neighbours", "status", "key"}
 local run_rows = {}
 for _, e in ipairs(runs) do
   local p = e.paddy or {}
@@ -114,11 +116,12 @@ for _, d in ipairs(diameters) do
     report.cell(s.slump_mm.mean), report.cell(s.slump_mm.std), report.cell(s.slump_flow_mm.mean), report.cell(s.slump_flow_mm.std),
     report.cell(s.slump_flow_ruler_mm.mean), report.cell(s.slump_flow_ruler_mm.std),
     report.cell(s.slump_flow_area_mm.mean), report.cell(s.slump_flow_area_mm.std),
-    report.cell(s.edge_ring_h_mm.mean), report.cell(s.edge_ring_h_mm.std), report.cell(s.wall_time_s)}
+    report.cell(s.edge_ring_h_mm.mean), report.cell(s.edge_ring_h_mm.std),
+    report.cell(s.fill_solid_fraction.mean), report.cell(s.fill_solid_fraction.std), report.cell(s.wall_time_s)}
 end
 util.write_csv("cg_summary.csv", {"d_mm", "alpha", "runs", "particles", "slump_mean_mm", "slump_std_mm", "slump_flow_mean_mm",
   "slump_flow_std_mm", "ruler_mean_mm", "ruler_std_mm", "area_mean_mm", "area_std_mm", "edge_ring_h_mean_mm", "edge_ring_h_std_mm",
-  "wall_time_mean_s"}, sum_rows)
+  "fill_solid_fraction_mean", "fill_solid_fraction_std", "wall_time_mean_s"}, sum_rows)
 
 -- Do the sizes agree within the scatter? One-way ANOVA over the sizes; Welch t of each size vs
 -- the finest.
@@ -137,7 +140,7 @@ for _, y in ipairs(RESPONSES) do
                                  report.cell(w.difference), report.cell(w.t), report.cell(w.df), "", report.cell(w.p)}
   end
 end
-util.write_csv("cg_tests.csv", {"response", "test", "difference_mm", "F_or_t", "df1", "df2", "p"}, test_rows)
+util.write_csv("cg_tests.csv", {"response", "test", "difference", "F_or_t", "df1", "df2", "p"}, test_rows)
 
 -- Mean profile h(r) per size (seeds share the ring bins of their size).
 local prof_lines = {}

@@ -116,6 +116,10 @@ function M.slump_row(run)
     simulated_time_s = r.simulated_time_s, wall_time_s = meta.wall_time, threads = meta.threads,
     alpha = r.coarse_graining and r.coarse_graining.alpha,
     edge_ring_r_mm = edge_r, edge_ring_h_mm = edge_h,
+    fill_solid_fraction = r.fill_solid_fraction,
+    core_solid_fraction = r.fill_structure and r.fill_structure.solid_fraction,
+    core_neighbours = r.fill_structure and r.fill_structure.neighbours,
+    core_share_10_neighbours = r.fill_structure and r.fill_structure.neighbours_10_or_more,
   }
 end
 
