@@ -103,7 +103,10 @@ sim:run{duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_ev
         callback = function(s) return not (s:time() - t0 >= P.min_rest_time and util.rms_speed(s, mass) < P.rest_speed) end}
 local settle_time = sim:time() - t0
 local struck = sim:remove_if(function(i, x, y, z, r) return z + r > P.fill_level end)
-if poured then pour.remove_hopper(sim, poured) end
+if poured then
+  pour.check_full("rheometer", struck, P.fill_level)
+  pour.remove_hopper(sim, poured)
+end
 local fill_solid = 0
 for _, r in ipairs(sim:radii()) do fill_solid = fill_solid + 4 / 3 * math.pi * r ^ 3 end
 fill_solid = fill_solid / (math.pi * R_cup ^ 2 * P.fill_level)

@@ -152,7 +152,10 @@ if cone then
   }
   settle_time = sim:time() - t0
   struck = sim:remove_if(function(i, x, y, z, r) return z + r > H end)
-  if poured then pour.remove_hopper(sim, poured) end
+  if poured then
+    pour.check_full("slump", struck, H)
+    pour.remove_hopper(sim, poured)
+  end
   mass = util.total_mass(sim, P.mud_density)
 end
 local particles = sim:count()

@@ -82,6 +82,15 @@ function M.check_settle_time(who, fill, settle_max_time, min_rest_time)
   end
 end
 
+-- After settling, a full container has spheres above its rim (the strike-off removes them). None
+-- means the pour fell short and the container is not full: refuse to go on.
+function M.check_full(who, struck, level)
+  if struck == 0 then
+    error(string.format("%s: the poured fill settled below the rim (z = %g m): nothing to strike off, so the "
+                        .. "container is not full; raise lib/pour.lua's margin", who, level), 2)
+  end
+end
+
 -- After the strike-off nothing is left in the hopper: send it up and away from the experiment (the
 -- engine has no wall removal; a wall far away costs nothing).
 function M.remove_hopper(sim, fill)

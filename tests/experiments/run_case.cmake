@@ -79,6 +79,11 @@ elseif(CASE STREQUAL "fill_structure")
   expect_code(${code} 0)
   result(ok ok)
 
+elseif(CASE STREQUAL "pour")
+  run_paddy(code se run ${HERE}/pour.lua --out out --threads 1)
+  expect_code(${code} 0)
+  result(ok ok)
+
 elseif(CASE STREQUAL "timestep_damping")
   run_paddy(code se run ${HERE}/timestep_damping.lua --out out --threads 1)
   expect_code(${code} 0)

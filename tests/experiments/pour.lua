@@ -1,0 +1,48 @@
+-- lib/pour.lua: region volumes and fall time in closed form; the hopper is as tall as the formula
+-- says and every loose sphere starts inside the container or the hopper; a fill that settled below
+-- the rim, or a settling time shorter than the fall, is refused.
+local pour = require("lib.pour")
+local function check(cond, fmt, ...)
+  if not cond then error(string.format(fmt, ...), 2) end
+end
+local function near(a, b, tol) return math.abs(a - b) <= tol * math.abs(b) end
+
+-- Slump cone 100/200/300 mm: V = π h/3 (R² + R r + r²) = 5.4978 L; a cylinder π r² h.
+local cone = {type = "cone", base = {0, 0, 0}, radius_bottom = 0.1, radius_top = 0.05, height = 0.3}
+check(near(pour.region_volume(cone), math.pi * 0.3 / 3 * (0.01 + 0.005 + 0.0025), 1e-14), "cone volume")
+check(near(pour.region_volume{type = "cylinder", radius = 0.05, height = 0.12}, math.pi * 0.0025 * 0.12, 1e-14), "cylinder volume")
+check(not pcall(pour.region_volume, {type = "box"}), "a box region must be refused")
+check(near(pour.fall_time(1.2), math.sqrt(2 * 1.2 / 9.81), 1e-14), "fall time")
+
+local sim = paddy.simulation{threads = 1, gravity = {0, 0, -9.81}}
+local m = sim:material{name = "mud", density = 1680, shear_modulus = 1e6, poisson = 0.5}
+local s = sim:material{name = "steel", density = 7800, shear_modulus = 7e9, poisson = 0.3}
+local d = 0.02
+local f = pour.fill(sim, {region = cone, rim_radius = 0.05, radius = d / 2, material = m, seed = 3, wall_material = s})
+check(f.hopper ~= nil and f.filled == sim:count(), "hopper and count")
+-- (1 + margin)·φ_max·V of solid must be placed: the hopper holds the rest at the container's loose fraction.
+local V = pour.region_volume(cone)
+local h = ((1 + pour.margin) * pour.solid_fraction - f.loose_fraction) * V / (f.loose_fraction * math.pi * 0.05 ^ 2)
+check(near(f.hopper_height, h, 1e-12), "hopper height %.6f, formula %.6f", f.hopper_height, h)
+check(f.loose_fraction > 0.15 and f.loose_fraction < 0.38, "loose fraction %.3f (random sequential addition jams below 0.38)", f.loose_fraction)
+check(near(f.top_z, 0.3 + h, 1e-12), "top_z")
+local xs, ys, zs = sim:xyz()
+local solid = 0
+for i = 1, #xs do
+  local rr = math.sqrt(xs[i] ^ 2 + ys[i] ^ 2)
+  local inside = (zs[i] <= 0.3 and rr <= 0.1 - 0.05 * zs[i] / 0.3) or (zs[i] > 0.3 - d / 2 and zs[i] <= f.top_z and rr <= 0.05)
+  check(inside, "sphere %d at r = %.4f, z = %.4f is outside the cone and the hopper", i, rr, zs[i])
+  solid = solid + math.pi / 6 * d ^ 3
+end
+-- At least the planned solid was placed (the hopper fills at about the container's loose fraction).
+check(solid > 0.9 * (1 + pour.margin) * pour.solid_fraction * V, "placed %.4g m^3 of solid, planned %.4g", solid,
+      (1 + pour.margin) * pour.solid_fraction * V)
+
+-- Refusals name the script and the allowed value.
+local ok, msg = pcall(pour.check_settle_time, "slump", f, 0.2, 0.3)
+check(not ok and msg:find("settle_max_time >= ", 1, true), "short settling accepted: %s", tostring(msg))
+check(pcall(pour.check_settle_time, "slump", f, pour.fall_time(f.top_z) + 0.31, 0.3), "a long enough settling refused")
+ok, msg = pcall(pour.check_full, "slump", 0, 0.3)
+check(not ok and msg:find("settled below the rim", 1, true), "an unfilled container accepted: %s", tostring(msg))
+check(pcall(pour.check_full, "slump", 5, 0.3), "a full container refused")
+paddy.result{ok = true, hopper_height = f.hopper_height, loose_fraction = f.loose_fraction}
