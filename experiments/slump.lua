@@ -9,8 +9,8 @@
 --    until at rest (kinetic-energy criterion); strike off the excess above the rim, as the
 --    standard prescribes.
 -- 2. Lift the cone at lift_speed. The lift stops when the cone's bottom edge is `clearance`
---    above the highest particle under it that is not rising with the cone (the cone is then free
---    of the pile; lifting it further would only cost time: 300 mm at 0.05 m/s = 6 s).
+--    above the highest particle under it (the cone is then free of the pile; lifting it further
+--    would only cost time: 300 mm at 0.05 m/s = 6 s).
 -- 3. Run until the pile is at rest (RMS speed from the kinetic energy below rest_speed, at least
 --    min_rest_time after the lift) or max_time after the start of the lift.
 -- 4. Measure slump (300 mm − pile height at the axis), slump-flow (top-view image + circle fit,
@@ -119,19 +119,13 @@ io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 
 -- Highest particle top (z + r) under the cone's bottom ring (those the rising cone could touch).
--- rising_below: skip spheres rising faster than this (m/s): during the lift, a sphere wedged in
--- the cone rises with it and is no longer part of the pile; counting it would never let the lift
--- stop.
-local function top_under_cone(rising_below)
+local function top_under_cone()
   local xs, ys, zs = sim:xyz()
   local radii = sim:radii()
-  local vs = rising_below and sim:velocities() or nil
   local top = 0
   for i = 1, #xs do
     local r = radii[i]
-    if xs[i] ^ 2 + ys[i] ^ 2 < (R_bottom + r) ^ 2 and not (vs and vs[i][3] > rising_below) then
-      top = math.max(top, zs[i] + r)
-    end
+    if xs[i] ^ 2 + ys[i] ^ 2 < (R_bottom + r) ^ 2 then top = math.max(top, zs[i] + r) end
   end
   return top
 end
@@ -200,7 +194,7 @@ local function sample(s)
                            slump_flow_mm = spread.diameter_fit * 1000, rms_speed = v,
                            cone_bottom_mm = cone_z and cone_z * 1000 or nil}
   if not lift_stop then
-    if cone_z > top_under_cone(0.5 * P.lift_speed) + P.clearance then
+    if cone_z > top_under_cone() + P.clearance then
       sim:set_motion(cone, {type = "fixed"})
       lift_stop = t
       io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm\n", t - t_lift, cone_z * 1000))
