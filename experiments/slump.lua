@@ -225,8 +225,10 @@ sample(sim)
 sim:run{duration = P.max_time, every = P.history_interval, snapshot_every = snapshot_every,
         progress = P.progress, callback = sample}
 if not at_rest then
-  io.stderr:write(string.format("warning: slump: the pile is not at rest after max_time = %g s (RMS speed %.3g m/s)\n",
-                                P.max_time, util.rms_speed(sim, mass)))
+  io.stderr:write(string.format("warning: slump: the pile is not at rest after max_time = %g s (RMS speed %.3g m/s)%s\n",
+                                P.max_time, util.rms_speed(sim, mass),
+                                (cone and not lift_stop) and "; the lift never stopped: a sphere under the cone kept "
+                                .. "rising with it (wedged in the cone); see slump_history for whether the pile was steady" or ""))
 end
 
 -- 4. Measurements.
