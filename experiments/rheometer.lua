@@ -107,12 +107,8 @@ if poured then
   pour.check_full("rheometer", struck, P.fill_level)
   pour.remove_hopper(sim, poured)
 end
-local fill_solid = 0
-for _, r in ipairs(sim:radii()) do fill_solid = fill_solid + 4 / 3 * math.pi * r ^ 3 end
-fill_solid = fill_solid / (math.pi * R_cup ^ 2 * P.fill_level)
-local structure, structure_note = fill_structure.measure(sim, {z_min = 2 * d, z_max = P.fill_level - 2 * d,
-  radius_bottom = R_cup - 2 * d, radius_top = R_cup - 2 * d})
-fill_structure.warn_if_crystalline("rheometer", structure)
+local fill_solid, structure = fill_structure.measure_fill("rheometer", sim,
+  {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = P.fill_level}, d)
 
 -- 2. The vane: remove the particles overlapping its blades (slabs along 0°, 90°, ... from the
 -- shaft to the tips) or its shaft, then add it.
@@ -282,7 +278,7 @@ paddy.result{
   particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed, packing = P.packing,
   fill_solid_fraction = fill_solid,   -- sphere volume / cup volume below fill_level, before the vane goes in
   hopper_height_m = poured and poured.hopper_height or nil,
-  fill_structure = structure or {note = structure_note},
+  fill_structure = structure,
   settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),

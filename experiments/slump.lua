@@ -86,11 +86,11 @@ if P.packing == "poured" and not cone then
   error("packing = poured needs the cone (cone = mesh); with cone = none use packing = lattice or random")
 end
 local radius = mud.radius(d, P.size_spread)
+local cone_region = {type = "cone", base = {0, 0, 0}, radius_bottom = R_bottom, radius_top = R_top, height = H}
 local filled, solid_fraction, poured
 if P.packing == "poured" then
   poured = pour.fill(sim, {
-    region = {type = "cone", base = {0, 0, 0}, radius_bottom = R_bottom, radius_top = R_top, height = H},
-    rim_radius = R_top, radius = radius, material = m_mud, seed = seed, wall_material = m_steel,
+    region = cone_region, rim_radius = R_top, radius = radius, material = m_mud, seed = seed, wall_material = m_steel,
   })
   filled, solid_fraction = poured.filled, poured.loose_fraction
   pour.check_settle_time("slump", poured, P.settle_max_time, P.min_rest_time)
@@ -159,17 +159,10 @@ if cone then
   mass = util.total_mass(sim, P.mud_density)
 end
 local particles = sim:count()
--- Solid fraction of the fill as the lift starts: sphere volume / cone volume (the bulk density of
--- the simulated mud is this times the particle density).
-local fill_solid = 0
-for _, r in ipairs(sim:radii()) do fill_solid = fill_solid + 4 / 3 * math.pi * r ^ 3 end
-fill_solid = fill_solid / pour.region_volume{type = "cone", radius_bottom = R_bottom, radius_top = R_top, height = H}
--- Its structure two diameters away from the walls (lib/fill_structure.lua): a random packing, or
--- a crystal (which no mud is)?
-local function cone_radius(z) return R_bottom + (R_top - R_bottom) * z / H end
-local structure, structure_note = fill_structure.measure(sim, {z_min = 2 * d, z_max = H - 2 * d,
-  radius_bottom = cone_radius(2 * d) - 2 * d, radius_top = cone_radius(H - 2 * d) - 2 * d})
-fill_structure.warn_if_crystalline("slump", structure)
+-- The fill as the lift starts: solid fraction in the cone (the bulk density of the simulated mud is
+-- this times the particle density) and the structure of its core, a random packing or a crystal
+-- (which no mud is; lib/fill_structure.lua).
+local fill_solid, structure = fill_structure.measure_fill("slump", sim, cone_region, d)
 local function measure_slump()
   return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
 end
@@ -315,7 +308,7 @@ paddy.result{
   fill_solid_fraction = fill_solid,          -- in the cone as the lift starts
   fill_initial_solid_fraction = solid_fraction,  -- as placed (poured: the loose spheres in the cone)
   hopper_height_m = poured and poured.hopper_height or nil,
-  fill_structure = structure or {note = structure_note},  -- core solid fraction, neighbours, g(sqrt2 d), crystalline (lib/fill_structure.lua)
+  fill_structure = structure,  -- core solid fraction, neighbours, g(sqrt2 d), crystalline (lib/fill_structure.lua)
   time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),

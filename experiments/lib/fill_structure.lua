@@ -1,6 +1,6 @@
 -- Structure of a settled fill, away from the walls: is it a random packing or a crystal?
 --
--- For the spheres whose centres lie in a core region (a frustum, axis +z) it reports
+-- For the spheres whose centres lie in a core region (a sim:fill cone or cylinder region) it reports
 --   solid_fraction  Σ (π/6) d_i³ of the core centres / core volume (random packings of
 --                   frictional spheres 0.55–0.64, Scott & Kilgour 1969, J. Phys. D 2:863; the FCC
 --                   crystal 0.74). Centres near the core's surface count whole, so a core only a
@@ -16,19 +16,14 @@
 --                   the dip before the split second peak (g ≈ 0.5–0.9) in a random packing
 --                   (Finney 1970, Proc. R. Soc. A 319:479).
 -- `crystalline` is neighbours_10_or_more > crystal_share (default 0.1).
+local util = require("lib.util")
+
 local M = {}
 
 M.crystal_share = 0.1
 
--- Volume of the frustum {radius_bottom, radius_top, z_min, z_max}.
-local function frustum_volume(c)
-  local a, b = c.radius_bottom, c.radius_top
-  return math.pi * (c.z_max - c.z_min) / 3 * (a * a + a * b + b * b)
-end
-
--- sim: a simulation; core: {radius_bottom =, radius_top =, z_min =, z_max =} (radii at z_min and
--- z_max, axis x = y = 0). Returns the table described above, or nil and a reason when the core
--- holds fewer than 20 centres.
+-- sim: a simulation; core: a cone or cylinder region as sim:fill takes it (axis +z through base).
+-- Returns the table described above, or nil and a reason when the core holds fewer than 20 centres.
 function M.measure(sim, core)
   local xs, ys, zs = sim:xyz()
   local radii = sim:radii()
@@ -40,15 +35,16 @@ function M.measure(sim, core)
     r_max = math.max(r_max, radii[i])
   end
   d_mean = d_mean / n
+  local x0, y0, z0 = core.base[1], core.base[2], core.base[3]
   local function inside(i)
-    local z = zs[i]
-    if z < core.z_min or z > core.z_max then return false end
-    local R = core.radius_bottom + (core.radius_top - core.radius_bottom) * (z - core.z_min) / (core.z_max - core.z_min)
-    return xs[i] * xs[i] + ys[i] * ys[i] < R * R
+    local h = zs[i] - z0
+    if h < 0 or h > core.height then return false end
+    local R = core.radius or core.radius_bottom + (core.radius_top - core.radius_bottom) * h / core.height
+    return (xs[i] - x0) ^ 2 + (ys[i] - y0) ^ 2 < R * R
   end
-  -- Cell grid (cell ≥ the largest distance looked at) over all spheres.
-  local reach = math.max(2.2 * r_max * 1.05, 1.6 * d_mean)
-  local cell = reach
+  -- Cell grid over all spheres; a cell is at least the largest distance looked at (a contact
+  -- neighbour within 1.05 (r_i + r_j), the g(r) bins up to 1.51 d).
+  local cell = math.max(2.2 * r_max * 1.05, 1.6 * d_mean)
   local grid = {}
   local function key(ix, iy, iz) return (ix * 4096 + iy) * 4096 + iz end
   local cx, cy, cz = {}, {}, {}
@@ -61,8 +57,8 @@ function M.measure(sim, core)
   end
   local bins, width, lo = 9, 0.02 * d_mean, 1.33 * d_mean
   local hi = lo + bins * width
-  local pairs = {}
-  for b = 1, bins do pairs[b] = 0 end
+  local shell_pairs = {}
+  for k = 1, bins do shell_pairs[k] = 0 end
   local core_n, solid, nb_sum, nb_many = 0, 0, 0, 0
   for i = 1, n do
     if inside(i) then
@@ -80,8 +76,8 @@ function M.measure(sim, core)
                   local r = math.sqrt(dx * dx + dy * dy + dz * dz)
                   if r < 1.05 * (radii[i] + radii[j]) then nb = nb + 1 end
                   if r >= lo and r < hi then
-                    local b = math.floor((r - lo) / width) + 1
-                    pairs[b] = pairs[b] + 1
+                    local k = math.floor((r - lo) / width) + 1
+                    shell_pairs[k] = shell_pairs[k] + 1
                   end
                 end
               end
@@ -94,12 +90,12 @@ function M.measure(sim, core)
     end
   end
   if core_n < 20 then return nil, string.format("only %d sphere centres in the core", core_n) end
-  local volume = frustum_volume(core)
+  local volume = util.region_volume(core)
   local density = core_n / volume
   local g = 0
-  for b = 1, bins do
-    local r1, r2 = lo + (b - 1) * width, lo + b * width
-    g = math.max(g, pairs[b] / (core_n * density * 4 / 3 * math.pi * (r2 ^ 3 - r1 ^ 3)))
+  for k = 1, bins do
+    local r1, r2 = lo + (k - 1) * width, lo + k * width
+    g = math.max(g, shell_pairs[k] / (core_n * density * 4 / 3 * math.pi * (r2 ^ 3 - r1 ^ 3)))
   end
   return {
     core_particles = core_n,
@@ -113,13 +109,21 @@ function M.measure(sim, core)
   }
 end
 
--- Warns on stderr when a measured fill is crystalline; `who` names the script.
-function M.warn_if_crystalline(who, structure)
+-- The fill of a container after the strike-off, as the experiments report it: the solid fraction
+-- of the whole container (sphere volume / volume of `container`, a cone or cylinder region up to
+-- the fill level) and the structure of its core, two diameters `d` inside the walls, floor and
+-- top. Warns on stderr, naming `who`, when the core is crystalline. Returns the solid fraction and
+-- the structure (or {note = why not measured}).
+function M.measure_fill(who, sim, container, d)
+  local solid = 0
+  for _, r in ipairs(sim:radii()) do solid = solid + 4 / 3 * math.pi * r ^ 3 end
+  local structure, note = M.measure(sim, util.inner_region(container, 2 * d))
   if structure and structure.crystalline then
     io.stderr:write(string.format("warning: %s: the fill is crystalline (%.0f %% of the core's spheres have 10 or more "
                                   .. "neighbours, solid fraction %.3f): it resists shear like no mud; use packing = poured\n",
                                   who, 100 * structure.neighbours_10_or_more, structure.solid_fraction))
   end
+  return solid / util.region_volume(container), structure or {note = note}
 end
 
 return M

@@ -13,21 +13,13 @@
 -- of about 0.3 before it jams (the limit is 0.38; Feder 1980, J. Theor. Biol. 87:237). The settled
 -- packing holds at most `solid_fraction` (default 0.64), so the hopper is made tall enough that
 -- `margin` more than a fill at that fraction lands in the container: it is always full to the rim.
+local util = require("lib.util")
+
 local M = {}
 
 M.loose_fraction = 0.35   -- asked of the random placement (it jams near 0.3)
 M.solid_fraction = 0.64   -- the densest the settled fill can be (random close packing)
 M.margin = 0.1            -- extra loose spheres beyond a fill at solid_fraction
-
--- Volume of a fill region (sim:fill's cone or cylinder, axis +z).
-function M.region_volume(region)
-  if region.type == "cylinder" then return math.pi * region.radius ^ 2 * region.height end
-  if region.type == "cone" then
-    local a, b = region.radius_bottom, region.radius_top
-    return math.pi * region.height / 3 * (a * a + a * b + b * b)
-  end
-  error("lib/pour.lua: region type '" .. tostring(region.type) .. "' is not one of cone, cylinder", 2)
-end
 
 -- Free-fall time of the highest loose sphere onto the floor of the container: a lower bound of the
 -- settling time.
@@ -52,7 +44,7 @@ function M.fill(sim, spec)
                            packing = "random", volume_fraction = loose}
   if not (phi0 > 0) then error("lib/pour.lua: no sphere fits in the container", 2) end
   -- The settled fill needs (1 + margin)·phi_solid·V of solid; the container holds phi0·V loose.
-  local V = M.region_volume(region)
+  local V = util.region_volume(region)
   local missing = ((1 + margin) * phi_solid - phi0) * V
   local out = {filled = n, loose_fraction = phi0, hopper_height = 0, top_z = rim_z}
   if missing <= 0 then return out end

@@ -146,6 +146,30 @@ function M.gnuplot(stem, script)
   return png
 end
 
+-- Volume of a sim:fill region of type cone or cylinder (axis +z).
+function M.region_volume(region)
+  if region.type == "cylinder" then return math.pi * region.radius ^ 2 * region.height end
+  if region.type == "cone" then
+    local a, b = region.radius_bottom, region.radius_top
+    return math.pi * region.height / 3 * (a * a + a * b + b * b)
+  end
+  error("region type '" .. tostring(region.type) .. "' is not one of cone, cylinder", 2)
+end
+
+-- The part of a cone or cylinder region at least `margin` from its walls, floor and top, measured
+-- horizontally for a cone's slanted wall: the same type, `margin` less in radius at every height.
+function M.inner_region(region, margin)
+  local b = region.base
+  local inner = {type = region.type, base = {b[1], b[2], b[3] + margin}, height = region.height - 2 * margin}
+  if region.type == "cylinder" then
+    inner.radius = region.radius - margin
+  else
+    local function radius_at(z) return region.radius_bottom + (region.radius_top - region.radius_bottom) * z / region.height end
+    inner.radius_bottom, inner.radius_top = radius_at(margin) - margin, radius_at(region.height - margin) - margin
+  end
+  return inner
+end
+
 -- The closing lines of an experiment on stdout: where result.json is, then the pictures that were
 -- drawn (names in `order`, looked up in `pictures`; missing ones skipped), one per line.
 function M.print_outputs(pictures, order)

@@ -17,7 +17,7 @@ local function box_sim(packing, extra)
   return sim
 end
 -- Core: a cylinder of radius 6 d, 6 d to 14 d high (well inside the 20 d box).
-local core = {radius_bottom = 0.06, radius_top = 0.06, z_min = 0.06, z_max = 0.14}
+local core = {type = "cylinder", base = {0, 0, 0.06}, radius = 0.06, height = 0.08}
 local core_volume = math.pi * 0.06 ^ 2 * 0.08
 
 -- FCC ("lattice") at spacing 1.01: nearest neighbours at 1.01 d < 1.05 d.
@@ -41,7 +41,7 @@ check(rsa.crystalline == false, "random packing called crystalline")
 
 -- A core with too few centres is refused with a reason, not measured.
 local none, why = fill_structure.measure(box_sim("random", {volume_fraction = 0.3}),
-                                         {radius_bottom = 0.004, radius_top = 0.004, z_min = 0.1, z_max = 0.105})
+                                         {type = "cylinder", base = {0, 0, 0.1}, radius = 0.004, height = 0.005})
 check(none == nil and why:find("centres in the core", 1, true), "tiny core: %s", tostring(why))
 
 paddy.result{ok = true, fcc = fcc, random = rsa}

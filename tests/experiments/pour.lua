@@ -1,7 +1,8 @@
--- lib/pour.lua: region volumes and fall time in closed form; the hopper is as tall as the formula
+-- lib/pour.lua (and lib/util.lua's region volume and inner region): closed forms; the hopper is as tall as the formula
 -- says and every loose sphere starts inside the container or the hopper; a fill that settled below
 -- the rim, or a settling time shorter than the fall, is refused.
 local pour = require("lib.pour")
+local util = require("lib.util")
 local function check(cond, fmt, ...)
   if not cond then error(string.format(fmt, ...), 2) end
 end
@@ -9,9 +10,16 @@ local function near(a, b, tol) return math.abs(a - b) <= tol * math.abs(b) end
 
 -- Slump cone 100/200/300 mm: V = π h/3 (R² + R r + r²) = 5.4978 L; a cylinder π r² h.
 local cone = {type = "cone", base = {0, 0, 0}, radius_bottom = 0.1, radius_top = 0.05, height = 0.3}
-check(near(pour.region_volume(cone), math.pi * 0.3 / 3 * (0.01 + 0.005 + 0.0025), 1e-14), "cone volume")
-check(near(pour.region_volume{type = "cylinder", radius = 0.05, height = 0.12}, math.pi * 0.0025 * 0.12, 1e-14), "cylinder volume")
-check(not pcall(pour.region_volume, {type = "box"}), "a box region must be refused")
+check(near(util.region_volume(cone), math.pi * 0.3 / 3 * (0.01 + 0.005 + 0.0025), 1e-14), "cone volume")
+check(near(util.region_volume{type = "cylinder", radius = 0.05, height = 0.12}, math.pi * 0.0025 * 0.12, 1e-14), "cylinder volume")
+check(not pcall(util.region_volume, {type = "box"}), "a box region must be refused")
+-- 20 mm inside the cone: from z = 0.02 to 0.28, radius R(z) − 0.02 with R(z) = 0.1 − z/6.
+local inner = util.inner_region(cone, 0.02)
+check(inner.type == "cone" and near(inner.base[3], 0.02, 1e-15) and near(inner.height, 0.26, 1e-14), "inner cone: base and height")
+check(near(inner.radius_bottom, 0.1 - 0.02 / 6 - 0.02, 1e-14) and near(inner.radius_top, 0.1 - 0.28 / 6 - 0.02, 1e-14),
+      "inner cone radii %.6f, %.6f", inner.radius_bottom, inner.radius_top)
+local cup = util.inner_region({type = "cylinder", base = {0, 0, 0}, radius = 0.05, height = 0.12}, 0.016)
+check(near(cup.radius, 0.034, 1e-14) and near(cup.base[3], 0.016, 1e-15) and near(cup.height, 0.088, 1e-14), "inner cylinder")
 check(near(pour.fall_time(1.2), math.sqrt(2 * 1.2 / 9.81), 1e-14), "fall time")
 
 local sim = paddy.simulation{threads = 1, gravity = {0, 0, -9.81}}
@@ -21,7 +29,7 @@ local d = 0.02
 local f = pour.fill(sim, {region = cone, rim_radius = 0.05, radius = d / 2, material = m, seed = 3, wall_material = s})
 check(f.hopper ~= nil and f.filled == sim:count(), "hopper and count")
 -- (1 + margin)·φ_max·V of solid must be placed: the hopper holds the rest at the container's loose fraction.
-local V = pour.region_volume(cone)
+local V = util.region_volume(cone)
 local h = ((1 + pour.margin) * pour.solid_fraction - f.loose_fraction) * V / (f.loose_fraction * math.pi * 0.05 ^ 2)
 check(near(f.hopper_height, h, 1e-12), "hopper height %.6f, formula %.6f", f.hopper_height, h)
 check(f.loose_fraction > 0.15 and f.loose_fraction < 0.38, "loose fraction %.3f (random sequential addition jams below 0.38)", f.loose_fraction)
