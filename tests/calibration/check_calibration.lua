@@ -38,11 +38,14 @@ for _, s in ipairs(cal.simulations) do
         tostring(cal.time_step.fraction))
 end
 
--- Every simulation is logged once, with a distinct key.
+-- Every simulation is logged once, with a distinct key and its job's own wall time (the cost figures).
 local keys = {}
 for _, s in ipairs(cal.simulations) do
   check(not keys[s.key], "simulation %s logged twice", s.key)
   keys[s.key] = true
+  local wall = paddy.read_json(P.dir .. "/campaign/jobs/" .. s.key .. "/result.json").metadata.wall_time
+  check(type(s.wall_time_s) == "number" and s.wall_time_s > 0 and s.wall_time_s == wall,
+        "simulation %d (%s): wall time %s, its job's %s", s.index, s.stage, tostring(s.wall_time_s), tostring(wall))
 end
 check(r.simulations == #cal.simulations, "simulation count %d vs %d", r.simulations, #cal.simulations)
 

@@ -53,7 +53,7 @@ function Runner:run(stage, points)
       local logged = self.by_key[keys[i]]
       if not logged then
         logged = {index = #self.log + 1, stage = stage, label = p.label, key = keys[i], seed = p.seed, params = p.params,
-                  responses = row.responses, wall_time_s = e.metadata and e.metadata.wall_time_s}
+                  responses = row.responses, wall_time_s = e.metadata and e.metadata.wall_time}
         self.log[#self.log + 1] = logged
         self.by_key[keys[i]] = logged
       end
