@@ -39,7 +39,7 @@ function M.measure(sim, core)
   local function inside(i)
     local h = zs[i] - z0
     if h < 0 or h > core.height then return false end
-    local R = core.radius or core.radius_bottom + (core.radius_top - core.radius_bottom) * h / core.height
+    local R = util.region_radius_at(core, h)
     return (xs[i] - x0) ^ 2 + (ys[i] - y0) ^ 2 < R * R
   end
   -- Cell grid over all spheres; a cell is at least the largest distance looked at (a contact
@@ -115,8 +115,7 @@ end
 -- top. Warns on stderr, naming `who`, when the core is crystalline. Returns the solid fraction and
 -- the structure (or {note = why not measured}).
 function M.measure_fill(who, sim, container, d)
-  local solid = 0
-  for _, r in ipairs(sim:radii()) do solid = solid + 4 / 3 * math.pi * r ^ 3 end
+  local solid = util.total_mass(sim, 1)   -- sphere volume
   local structure, note = M.measure(sim, util.inner_region(container, 2 * d))
   if structure and structure.crystalline then
     io.stderr:write(string.format("warning: %s: the fill is crystalline (%.0f %% of the core's spheres have 10 or more "

@@ -156,6 +156,12 @@ function M.region_volume(region)
   error("region type '" .. tostring(region.type) .. "' is not one of cone, cylinder", 2)
 end
 
+-- Radius of a cone or cylinder region at height `h` above its base.
+function M.region_radius_at(region, h)
+  if region.type == "cylinder" then return region.radius end
+  return region.radius_bottom + (region.radius_top - region.radius_bottom) * h / region.height
+end
+
 -- The part of a cone or cylinder region at least `margin` from its walls, floor and top, measured
 -- horizontally for a cone's slanted wall: the same type, `margin` less in radius at every height.
 function M.inner_region(region, margin)
@@ -164,8 +170,8 @@ function M.inner_region(region, margin)
   if region.type == "cylinder" then
     inner.radius = region.radius - margin
   else
-    local function radius_at(z) return region.radius_bottom + (region.radius_top - region.radius_bottom) * z / region.height end
-    inner.radius_bottom, inner.radius_top = radius_at(margin) - margin, radius_at(region.height - margin) - margin
+    inner.radius_bottom = M.region_radius_at(region, margin) - margin
+    inner.radius_top = M.region_radius_at(region, region.height - margin) - margin
   end
   return inner
 end

@@ -31,19 +31,16 @@ check(#r.selected_factors == 3, "three factors selected, got %d", #r.selected_fa
 -- (0.01 in the input: factor 0.8043416 of 0.2), the same in every job's result.json.
 check(math.abs(cal.time_step.factor - 0.8043416) < 1e-6 and cal.time_step.lowest_restitution == 0.01,
       "time step factor %s at restitution %s", tostring(cal.time_step.factor), tostring(cal.time_step.lowest_restitution))
-for _, s in ipairs(cal.simulations) do
-  local job = paddy.read_json(P.dir .. "/campaign/jobs/" .. s.key .. "/result.json").results
-  check(job.time_step_fraction == cal.time_step.fraction and job.time_step_damping_factor == 1,
-        "simulation %d (%s): time step fraction %s, expected %s", s.index, s.stage, tostring(job.time_step_fraction),
-        tostring(cal.time_step.fraction))
-end
-
 -- Every simulation is logged once, with a distinct key and its job's own wall time (the cost figures).
 local keys = {}
 for _, s in ipairs(cal.simulations) do
+  local job = paddy.read_json(P.dir .. "/campaign/jobs/" .. s.key .. "/result.json")
+  check(job.results.time_step_fraction == cal.time_step.fraction and job.results.time_step_damping_factor == 1,
+        "simulation %d (%s): time step fraction %s, expected %s", s.index, s.stage, tostring(job.results.time_step_fraction),
+        tostring(cal.time_step.fraction))
   check(not keys[s.key], "simulation %s logged twice", s.key)
   keys[s.key] = true
-  local wall = paddy.read_json(P.dir .. "/campaign/jobs/" .. s.key .. "/result.json").metadata.wall_time
+  local wall = job.metadata.wall_time
   check(type(s.wall_time_s) == "number" and s.wall_time_s > 0 and s.wall_time_s == wall,
         "simulation %d (%s): wall time %s, its job's %s", s.index, s.stage, tostring(s.wall_time_s), tostring(wall))
 end
