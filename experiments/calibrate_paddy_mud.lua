@@ -93,8 +93,13 @@ end
 local e_low = math.huge
 for _, v in pairs(lowest) do e_low = math.min(e_low, v) end
 local step = {lowest_restitution = e_low, factor = mud.timestep_factor(e_low)}
-step.fraction = P.timestep_fraction * step.factor
+-- The base step: timestep_fraction if given, else the conventions' (paddy 0.1 T_R, edem 0.2 T_R).
+local base_fraction = P.timestep_fraction
+if (paddy.set_parameters or {}).timestep_fraction == nil then base_fraction = mud.conventions[input.conventions].timestep_fraction end
+step.fraction = base_fraction * step.factor
 fixed.timestep_fraction, fixed.timestep_damping = step.fraction, false
+-- The input's contact conventions (only a non-default choice enters the jobs, so paddy jobs keep their keys).
+if input.conventions ~= "paddy" then fixed.contact_conventions = input.conventions end
 for k, v in pairs(user) do fixed[k] = v end
 
 local campaign = paddy.campaign{

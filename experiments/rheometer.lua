@@ -24,7 +24,7 @@ local util = require("lib.util")
 local rheology = require("lib.rheology")
 local measure = require("paddy.measure")
 
-local P = paddy.parameters(mud.parameters{
+local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.02,
    description = "mean sphere diameter (reference 0.002; coarse grained above)"},
   {name = "size_spread", default = 0.0, min = 0, max = 0.3, description = "relative std of the diameters (0: monodisperse)"},
@@ -41,8 +41,8 @@ local P = paddy.parameters(mud.parameters{
   {name = "vane_diameter", default = 0.05, unit = "m", min = 0.005, max = 1, description = "vane diameter (blade tips)"},
   {name = "vane_height", default = 0.06, unit = "m", min = 0.005, max = 1, description = "blade height"},
   {name = "vane_bottom", default = 0.03, unit = "m", min = 0, max = 1, description = "height of the blades' lower edge above the cup bottom"},
-  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (the slump test is converged at 0.1, not at 0.2); shortened for restitutions below 0.13 (docs/physics.md)"},
-  {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
+  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "set by contact_conventions / material unless given (paddy 0.1, edem 0.2; paddy_calibrated: 0.0804 as calibrated); time step / Rayleigh time at the reference damping (the slump test is converged at 0.1, not at 0.2); shortened for restitutions below 0.13 (docs/physics.md)"},
+  {name = "timestep_damping", default = true, description = "set by contact_conventions / material unless given; shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in (a poured fill needs at least its fall time plus min_rest_time)"},
   {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
@@ -51,7 +51,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "snapshot_interval", default = 0.25, unit = "s", min = 0, max = 10, description = "snapshots for ParaView (0: none)"},
   {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
   {name = "progress", default = true, description = "progress line on stderr"},
-})
+}))
 
 local wall_start = os.time()
 local d = P.particle_diameter
@@ -282,6 +282,7 @@ paddy.result{
   settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),
+  material = P.material_info,  -- conventions and material set used, with their source (lib/mud.lua)
   coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
                      scaled_params = cg.params, changed = cg.changed, rows = cg.rows},
   pictures = pictures,
@@ -289,6 +290,7 @@ paddy.result{
 }
 
 -- What the user sees on stdout at the end.
+print("model       " .. mud.describe(P))
 print("speed [rpm]   steady torque [N m]   shear stress [Pa]")
 for _, st in ipairs(steps) do
   print(string.format("%11g   %8.4f +- %-8.4f   %10.1f", st.speed_rpm, st.torque_Nm, st.torque_std, st.shear_stress_Pa))

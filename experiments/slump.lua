@@ -26,7 +26,7 @@ local pour = require("lib.pour")
 local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
 
-local P = paddy.parameters(mud.parameters{
+local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04,
    description = "mean sphere diameter (reference 0.002; coarse grained above)"},
   {name = "size_spread", default = 0.0, min = 0, max = 0.3, description = "relative std of the diameters, normal, truncated at 2 std (0: monodisperse)"},
@@ -39,8 +39,8 @@ local P = paddy.parameters(mud.parameters{
   {name = "cone_top_diameter", default = 0.1, unit = "m", min = 0.01, max = 1, description = "cone top inner diameter"},
   {name = "cone_bottom_diameter", default = 0.2, unit = "m", min = 0.01, max = 1, description = "cone bottom inner diameter"},
   {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "packing=lattice: fill this fraction of the height above the rim, struck off after settling"},
-  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping (converged at 0.1; 0.2 is stable but not converged with this JKR mud, 0.3 unstable); shortened for restitutions below 0.13 (docs/physics.md)"},
-  {name = "timestep_damping", default = true, description = "shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
+  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "set by contact_conventions / material unless given (paddy 0.1, edem 0.2; paddy_calibrated: 0.0804 as calibrated); time step / Rayleigh time at the reference damping (converged at 0.1; 0.2 is stable but not converged with this JKR mud, 0.3 unstable); shortened for restitutions below 0.13 (docs/physics.md)"},
+  {name = "timestep_damping", default = true, description = "set by contact_conventions / material unless given; shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 2.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone (a poured fill needs at least its fall time plus min_rest_time)"},
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
   {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
@@ -53,7 +53,7 @@ local P = paddy.parameters(mud.parameters{
   {name = "pixel", default = 0.001, unit = "m", min = 1e-5, max = 0.01, description = "pixel of the top-view image"},
   {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
   {name = "progress", default = true, description = "progress line on stderr"},
-})
+}))
 
 local wall_start = os.time()
 local d = P.particle_diameter
@@ -312,6 +312,7 @@ paddy.result{
   time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),
+  material = P.material_info,  -- conventions and material set used, with their source (lib/mud.lua)
   coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
                      reference_params = reference_params, scaled_params = cg.params, changed = cg.changed,
                      rows = cg.rows, reference_particle_estimate = particles * cg.alpha ^ 3},
@@ -321,6 +322,7 @@ paddy.result{
 -- What the user sees on stdout at the end: both responses against the measurement, and where the
 -- results and pictures are.
 local function versus(v, m) return string.format("measured %d mm, %+.1f %%", m, 100 * (v - m) / m) end
+print("model       " .. mud.describe(P))
 print(string.format("slump       %6.1f mm   (%s)", final.slump * 1000, versus(final.slump * 1000, 231)))
 print(string.format("slump-flow  %6.1f mm   circle fit; ruler %.1f mm   (%s)", flow.diameter_fit * 1000,
                     flow.ruler.mean * 1000, versus(flow.diameter_fit * 1000, 480)))

@@ -12,6 +12,7 @@
 -- Outputs in --out: pb_runs.csv, pb_effects.csv, pb_validation.json, pb_runs.png,
 -- pb_effects.png, result.json.
 local util = require("lib.util")
+local mud = require("lib.mud")
 local report = require("report")
 local doe = require("paddy.doe")
 
@@ -22,7 +23,9 @@ local P = paddy.parameters{
   {name = "seed", default = 1, type = "integer", min = 1, max = 2147483647, description = "seed of every run (fill jitter)"},
   {name = "max_parallel", default = 1, type = "integer", min = 1, max = 256, description = "slump runs at once"},
   {name = "threads_per_job", default = 1, type = "integer", min = 1, max = 256, description = "threads of each slump run"},
-  {name = "timestep_fraction", default = 0.0, min = 0, max = 0.5, description = "time step / Rayleigh time of every run (0: slump.lua's default, 0.1)"},
+  {name = "contact_conventions", default = "paddy", choices = mud.convention_names,
+   description = "contact conventions of every run (lib/mud.lua; edem: EDEM as documented, 0.2 T_R by default)"},
+  {name = "timestep_fraction", default = 0.0, min = 0, max = 0.5, description = "time step / Rayleigh time of every run (0: slump.lua's default for the conventions: paddy 0.1, edem 0.2)"},
   {name = "fallback_timestep_fraction", default = 0.05, min = 0, max = 0.5,
    description = "a run that stops because its time step is too large runs again with this fraction (0: never)"},
   {name = "max_attempts", default = 1, type = "integer", min = 1, max = 10, description = "attempts per job (the runs are deterministic)"},
@@ -102,12 +105,15 @@ for _, row in ipairs(table4) do
   if not run_list or wanted[row.run] then
     local params = report.merge({particle_diameter = P.particle_diameter, progress = false}, extra)
     if P.timestep_fraction > 0 then params.timestep_fraction = P.timestep_fraction end
+    -- Only a non-default choice enters the job (the paddy runs keep their earlier job keys).
+    if P.contact_conventions ~= mud.default_conventions then params.contact_conventions = P.contact_conventions end
     local real = {}
     for _, h in ipairs(FACTORS) do
       real[h] = real_level(h, row[h])
       params[PARAM[h]] = real[h]
     end
-    local d = {row = row, real = real, params = params, timestep_fraction = P.timestep_fraction > 0 and P.timestep_fraction or 0.1}  -- 0.1: slump.lua default
+    local d = {row = row, real = real, params = params,  -- else slump.lua's default of the conventions
+               timestep_fraction = P.timestep_fraction > 0 and P.timestep_fraction or mud.conventions[P.contact_conventions].timestep_fraction}
     local key = probe:submit{script = script, params = params, seed = P.seed}
     local before = earlier_error(key)
     if probe:status(key) ~= "done" and timestep_failure(before) then

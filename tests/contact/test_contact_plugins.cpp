@@ -74,6 +74,7 @@ TEST_CASE("contact plugins: registration, kinds, parameters", "[contact][plugin]
                                                      {"mindlin", SubModelKind::Tangential},
                                                      {"jkr", SubModelKind::Normal},
                                                      {"constant_torque", SubModelKind::Rolling},
+                                                     {"constant_torque_explicit", SubModelKind::Rolling},
                                                      {"elastic_plastic", SubModelKind::Rolling}};
   REQUIRE(r.models.size() == expected.size());
   for (const auto& [name, kind] : expected) {
@@ -92,6 +93,8 @@ TEST_CASE("contact plugins: registration, kinds, parameters", "[contact][plugin]
   const auto& r1 = spec(r.models["constant_torque"], "rolling_friction");
   const auto& r2 = spec(r.models["elastic_plastic"], "rolling_friction");
   CHECK((r1.min == r2.min && r1.max == r2.max && r1.required == r2.required));
+  const auto& r3 = spec(r.models["constant_torque_explicit"], "rolling_friction");
+  CHECK((r1.min == r3.min && r1.max == r3.max && r1.required == r3.required));
   CHECK((r1.min == 0.0 && r1.max == 10.0));
   const auto& mu = spec(r.models["mindlin"], "friction");
   CHECK((mu.min == 0.0 && mu.max == 10.0));
@@ -99,6 +102,8 @@ TEST_CASE("contact plugins: registration, kinds, parameters", "[contact][plugin]
   CHECK((gam.min == 0.0 && gam.max == 100.0 && gam.unit == "J/m^2"));
   const auto& hy = spec(r.models["jkr"], "jkr_hysteretic");
   CHECK((hy.min == 0.0 && hy.max == 1.0 && hy.default_value == 0.0 && !hy.required));
+  const auto& os = spec(r.models["jkr"], "jkr_overlap_stiffness");
+  CHECK((os.min == 0.0 && os.max == 1.0 && os.default_value == 0.0 && !os.required));
   const auto& zeta = spec(r.models["elastic_plastic"], "rolling_damping");
   CHECK((zeta.min == 0.0 && zeta.max == 10.0 && zeta.default_value == 0.3));
   CHECK(r.models["hertz"].params.empty());
@@ -117,6 +122,7 @@ TEST_CASE("contact plugins: registration, kinds, parameters", "[contact][plugin]
   CHECK(make("jkr", {{"surface_energy", 0.1}})->maxSeparation(0.5e-3) == direct.maxSeparation(0.5e-3));
   CHECK(make("jkr", {{"surface_energy", 0.1}})->maxSeparation(0.5e-3) > 0.0);
   CHECK_THROWS_AS(make("jkr", {{"surface_energy", 0.1}, {"jkr_hysteretic", 0.5}}), paddy::InputError);
+  CHECK_THROWS_AS(make("jkr", {{"surface_energy", 0.1}, {"jkr_overlap_stiffness", 0.5}}), paddy::InputError);
 
   Chain plug, hdr;
   plug.add(make("jkr", {{"surface_energy", 0.1}}));

@@ -69,7 +69,7 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
-elseif(CASE MATCHES "^(rheology_share|fill_structure|pour)$")
+elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions)$")
   # Library checks written in Lua (tests/experiments/<case>.lua): each raises an error on a wrong
   # answer and writes ok = true at the end.
   run_paddy(code se run ${HERE}/${CASE}.lua --out out --threads 1)
@@ -122,9 +122,12 @@ elseif(CASE STREQUAL "slump_mini")
   #  - slump-flow > 222 mm = the cone's bottom diameter + one particle: the footprint of mud
   #    still inside the cone is at most 200 mm, so more means the pile spread out;
   #  - all particles are still there, the history has samples and the pictures exist.
+  # Run in the edem conventions (the default paddy path is run by rheometer_mini and validation_pb):
+  # the reference's EDEM set, the explicit rolling torque, 0.2 T_R, and stdout says so.
   run_paddy(code se run ${SOURCE}/experiments/slump.lua --out out --threads 1 --seed 3
             --set particle_diameter=0.022 --set settle_max_time=1.0 --set min_rest_time=0.2
-            --set max_time=4 --set history_interval=0.05 --set snapshot_interval=1 --set rest_speed=0.01)
+            --set max_time=4 --set history_interval=0.05 --set snapshot_interval=1 --set rest_speed=0.01
+            --set contact_conventions=edem)
   expect_code(${code} 0)
   result(slump slump_mm)
   result(flow slump_flow_mm)
@@ -140,7 +143,8 @@ elseif(CASE STREQUAL "slump_mini")
   if(NOT m OR diff LESS 0 OR diff GREATER 1)
     message(FATAL_ERROR "stdout does not report the slump ${slump} mm:\n${LAST_STDOUT}")
   endif()
-  foreach(pattern "slump-flow +[0-9]+\\.[0-9] mm +circle fit; ruler" "pictures +[^\n]*side_view\\.png" "slump_flow_top\\.png"
+  foreach(pattern "model +conventions edem; material reference_edem" "step 0\\.2 T_R"
+                  "slump-flow +[0-9]+\\.[0-9] mm +circle fit; ruler" "pictures +[^\n]*side_view\\.png" "slump_flow_top\\.png"
                   "ParaView +[^\n]*snapshots/particles\\.xmf")
     if(NOT LAST_STDOUT MATCHES "${pattern}")
       message(FATAL_ERROR "stdout lacks '${pattern}':\n${LAST_STDOUT}")
@@ -175,7 +179,14 @@ elseif(CASE STREQUAL "slump_mini")
   result(alpha coarse_graining alpha)
   expect_number(${alpha} GREATER 10.9 "alpha")
   result(gamma coarse_graining scaled_params jkr_surface_energy)
-  expect_number(${gamma} GREATER 1.05 "scaled surface energy")
+  expect_number(${gamma} GREATER 1.05 "scaled surface energy")  # 11 x the reference's 0.096 J/m^2
+  result(conv material conventions)
+  result(tsf time_step_fraction)
+  if(NOT conv STREQUAL "edem")
+    message(FATAL_ERROR "result.json: conventions ${conv} (expected edem)")
+  endif()
+  expect_number(${tsf} GREATER 0.19999 "time_step_fraction (edem: 0.2)")
+  expect_number(${tsf} LESS 0.20001 "time_step_fraction (edem: 0.2)")
   foreach(f slump_flow_top.png slump_flow_top.pgm side_view.png slump_history.png snapshots/particles.xmf)
     expect_file(${WORK}/out/${f})
   endforeach()

@@ -96,29 +96,9 @@ TEST_CASE("rolling resistance stops a rolling sphere at the closed-form distance
 }
 
 namespace {
-// A sphere on a plane inclined by θ (gravity tilted), type A rolling friction μ_r, sticking
-// Coulomb friction: distance rolled down the slope in `duration` after settling.
 double rollDownIncline(double tan_theta, double mu_r, double dt_fraction, double duration, Vec3* omega_out,
                        double* half_way = nullptr) {
-  const double R = 1e-3, g = 9.81;
-  InteractionSpec spec = hertzMindlin(0.3, 0.9);
-  spec.rolling = "constant_torque";
-  spec.params["rolling_friction"] = mu_r;
-  auto s = test::mudOnSteelFloor(spec);
-  auto& sim = *s.sim;
-  sim.addParticle(Vec3(0, 0, R), R, s.mud);
-  sim.setTimeStepFraction(dt_fraction);
-  sim.run(0.3);  // settle on the level plane
-  const double c = 1.0 / std::sqrt(1.0 + tan_theta * tan_theta);
-  sim.setGravity(Vec3(g * tan_theta * c, 0.0, -g * c));
-  sim.particles().velocity[0].setZero();
-  sim.particles().omega[0].setZero();
-  const double x0 = sim.particles().position[0].x();
-  sim.run(0.5 * duration);
-  if (half_way) *half_way = sim.particles().position[0].x() - x0;
-  sim.run(0.5 * duration);
-  *omega_out = sim.particles().omega[0];
-  return sim.particles().position[0].x() - x0;
+  return test::rollDownIncline("constant_torque", tan_theta, mu_r, dt_fraction, duration, omega_out, half_way);
 }
 }  // namespace
 

@@ -87,6 +87,14 @@ void openPaddyModule(lua_State* L, const RuntimeState& st) {
   lua_setfield(L, -2, "script");
   lua_pushboolean(L, st.options.help);
   lua_setfield(L, -2, "help");
+  // paddy.set_parameters: {name = text} of the --set overrides, so a script can tell a value the
+  // user gave from a declared default (e.g. a material set supplying the defaults).
+  lua_createtable(L, 0, static_cast<int>(st.options.sets.size()));
+  for (const auto& [name, text] : st.options.sets) {
+    lua_pushlstring(L, text.data(), text.size());
+    lua_setfield(L, -2, name.c_str());
+  }
+  lua_setfield(L, -2, "set_parameters");
   lua_pushvalue(L, -1);
   lua_setglobal(L, "paddy");
   luaL_getsubtable(L, LUA_REGISTRYINDEX, LUA_LOADED_TABLE);

@@ -29,6 +29,7 @@ local function section(t, name, defaults)
 end
 
 -- Reads and checks the file; returns the input with defaults filled in:
+--   conventions ("paddy" or "edem", default paddy),
 --   measured = {response = value}, responses = {names in a fixed order}, tolerance (fraction),
 --   factors = {{symbol, parameter, low, high, center, step, origin, search = {lo, hi}, bounds = {lo, hi}}},
 --   screening, steepest_ascent, box_behnken, verification, rheometer, surrogate.
@@ -37,6 +38,11 @@ function M.read(path)
   if not ok then error((tostring(t):gsub("^%s+", "")), 0) end
   if type(t) ~= "table" then fail(path, "the top level must be an object") end
   local input = {path = path, description = t.description or "", experiment = t.experiment or "slump.lua"}
+  -- Contact conventions of every simulation (experiments/lib/mud.lua: paddy or edem).
+  input.conventions = t.conventions or "paddy"
+  if input.conventions ~= "paddy" and input.conventions ~= "edem" then
+    fail(path, string.format("conventions = %s: allowed are \"paddy\" and \"edem\"", tostring(t.conventions)))
+  end
 
   if type(t.measured) ~= "table" then fail(path, "'measured' must be an object {response = measured value}") end
   input.measured, input.responses = {}, {}

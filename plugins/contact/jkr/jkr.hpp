@@ -20,10 +20,20 @@
 //                    as in LAMMPS' "jkr" (which, unlike here, releases at the force-controlled
 //                    pull-off δ_f = −0.5724 ℓ). Loses the adhesion work
 //                    W = −∫_{δ_c}^{0} F dδ = 3.33397 πγL² per approach–separation cycle.
-// Shared state: active = 1 inside the cut-off, a, S_n = 2E*a, S_t = 8G*a,
-// fn_friction = 4E*a³/(3R*) (the repulsive, Hertzian part of F_JKR).
+// Shared state: active = 1 inside the cut-off, a, fn_friction = 4E*a³/(3R*) (the repulsive,
+// Hertzian part of F_JKR: the load of the sliding limit and of the rolling torque, as EDEM's JKR
+// page prescribes), and the stiffnesses read by damping and the tangential spring:
+//   jkr_overlap_stiffness = 0 (Paddy): S_n = 2E*a, S_t = 8G*a from the JKR contact radius a,
+//                    so a contact is damped and has a tangential spring across the whole
+//                    cohesive range, in a gap (δ < 0) too;
+//   jkr_overlap_stiffness = 1 (EDEM): S_n = 2E* sqrt(R*δ), S_t = 8G* sqrt(R*δ) from the geometric
+//                    overlap, as in Hertz-Mindlin (no slip) (EDEM's JKR page: tangential elastic
+//                    force and both dissipation forces "as Hertz-Mindlin"); zero for δ ≤ 0, so a
+//                    contact held by cohesion across a gap is undamped and transmits no
+//                    tangential force. docs/physics.md "EDEM conventions".
 // maxSeparation(R*) = −δ_c. With γ = 0 the model is "hertz" exactly (same code path).
-// Parameters: surface_energy γ [J/m²] ∈ [0, 100]; jkr_hysteretic ∈ {0, 1}.
+// Parameters: surface_energy γ [J/m²] ∈ [0, 100]; jkr_hysteretic ∈ {0, 1};
+// jkr_overlap_stiffness ∈ {0, 1}.
 #pragma once
 
 #include "../common/contact_math.hpp"
@@ -37,8 +47,8 @@ namespace paddy::contact {
 
 class JkrNormal final : public SubModel {
  public:
-  JkrNormal(double e_star, double g_star, double gamma, bool hysteretic)
-      : e_star_(e_star), g_star_(g_star), gamma_(gamma), hysteretic_(hysteretic) {}
+  JkrNormal(double e_star, double g_star, double gamma, bool hysteretic, bool overlap_stiffness = false)
+      : e_star_(e_star), g_star_(g_star), gamma_(gamma), hysteretic_(hysteretic), overlap_stiffness_(overlap_stiffness) {}
 
   // Dimensionless constants of the quartic t⁴ − 2t = δ/ℓ.
   static double criticalOverlapScaled() {  // δ_c / ℓ from the EDEM a_c
@@ -115,14 +125,16 @@ class JkrNormal final : public SubModel {
       b.contact_radius[k] = a;
       b.fn[k] += repulsive - fscale * 4.0 * t3;
       b.fn_friction[k] = repulsive;
-      b.stiffness_n[k] = 2.0 * e_star_ * a;
-      b.stiffness_t[k] = 8.0 * g_star_ * a;
+      const double a_stiff = overlap_stiffness_ ? (d > 0.0 ? std::sqrt(r * d) : 0.0) : a;
+      b.stiffness_n[k] = 2.0 * e_star_ * a_stiff;
+      b.stiffness_t[k] = 8.0 * g_star_ * a_stiff;
     }
   }
 
  private:
   double e_star_, g_star_, gamma_;
   bool hysteretic_;
+  bool overlap_stiffness_;  // S_n, S_t from sqrt(R* δ) (EDEM) instead of a (Paddy)
 };
 
 }  // namespace paddy::contact

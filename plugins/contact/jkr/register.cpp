@@ -17,12 +17,18 @@ extern "C" PADDY_PLUGIN_EXPORT int paddy_register_plugin(PluginRegistry* r) {
        "attraction down to d_c (Johnson, Kendall & Roberts 1971; EDEM 2018)",
        {{"surface_energy", 0.0, 0.0, 100.0, "J/m^2", "surface energy gamma (work of adhesion 2 gamma)", true},
         {"jkr_hysteretic", 0.0, 0.0, 1.0, "",
-         "0: EDEM (attraction from d_c on approach too); 1: snap-in at touch, release at d_c", false}},
+         "0: EDEM (attraction from d_c on approach too); 1: snap-in at touch, release at d_c", false},
+        {"jkr_overlap_stiffness", 0.0, 0.0, 1.0, "",
+         "0: damping and tangential stiffness from the JKR contact radius a (Paddy); 1: from sqrt(R* d), "
+         "zero in a gap, as Hertz-Mindlin (EDEM)", false}},
        [](const ParamValues& p, const MaterialPair& m) -> std::unique_ptr<SubModel> {
          const double h = param(p, "jkr_hysteretic");
          if (h != 0.0 && h != 1.0)
            throw InputError("parameter 'jkr_hysteretic' = " + std::to_string(h) + " must be 0 or 1");
-         return std::make_unique<JkrNormal>(m.e_star, m.g_star, param(p, "surface_energy"), h == 1.0);
+         const double o = param(p, "jkr_overlap_stiffness");
+         if (o != 0.0 && o != 1.0)
+           throw InputError("parameter 'jkr_overlap_stiffness' = " + std::to_string(o) + " must be 0 or 1");
+         return std::make_unique<JkrNormal>(m.e_star, m.g_star, param(p, "surface_energy"), h == 1.0, o == 1.0);
        }});
   return PADDY_PLUGIN_ABI_VERSION;
 }

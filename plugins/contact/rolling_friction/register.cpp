@@ -1,6 +1,8 @@
 // Plugin paddy_rolling_friction: rolling sub-models "constant_torque" (EDEM type A / Ai et al. 2011
-// model A) and "elastic_plastic" (EDEM type C / Ai et al. 2011 model C).
+// model A, integrated implicitly), "constant_torque_explicit" (the same law applied explicitly, as
+// EDEM integrates it) and "elastic_plastic" (EDEM type C / Ai et al. 2011 model C).
 #include "constant_torque.hpp"
+#include "constant_torque_explicit.hpp"
 #include "elastic_plastic.hpp"
 
 #include <paddy/plugin.hpp>
@@ -16,6 +18,13 @@ extern "C" PADDY_PLUGIN_EXPORT int paddy_register_plugin(PluginRegistry* r) {
                   {rollingFrictionParam()},
                   [](const ParamValues& p, const MaterialPair&) -> std::unique_ptr<SubModel> {
                     return std::make_unique<ConstantTorqueRolling>(param(p, "rolling_friction"));
+                  }});
+  r->addSubModel({"constant_torque_explicit", SubModelKind::Rolling,
+                  "constant rolling torque tau_i = -mu_r F_n R_i w_i/|w_i| applied explicitly from the step's w "
+                  "(EDEM standard rolling friction, type A, as EDEM integrates it)",
+                  {rollingFrictionParam()},
+                  [](const ParamValues& p, const MaterialPair&) -> std::unique_ptr<SubModel> {
+                    return std::make_unique<ConstantTorqueExplicitRolling>(param(p, "rolling_friction"));
                   }});
   r->addSubModel({"elastic_plastic", SubModelKind::Rolling,
                   "elastic-plastic rolling spring k_r = 2.25 S_n mu_r^2 R*^2, limit mu_r R* F_n, damping "

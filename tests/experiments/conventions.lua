@@ -1,0 +1,98 @@
+-- lib/mud.lua's contact conventions and material sets (docs/physics.md "EDEM conventions"):
+-- which values, sub-models and time step a run gets for each choice, what --set overrides, and
+-- the refusals; the calibration input's "conventions" key.
+local mud = require("lib.mud")
+local input_file = require("lib.calibration.input")
+local function check(cond, fmt, ...)
+  if not cond then error(string.format(fmt, ...), 2) end
+end
+
+-- The declared parameters as paddy.parameters would return them with no --set.
+local function declared(overrides)
+  local P = {}
+  for _, e in ipairs(mud.parameters{
+    {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5},
+    {name = "timestep_damping", default = true},
+  }) do P[e.name] = e.default end
+  for k, v in pairs(overrides or {}) do P[k] = v end
+  return P
+end
+local function same(V, expected, what)
+  for k, v in pairs(expected) do
+    check(V[k] == v, "%s: %s = %s, expected %s", what, k, tostring(V[k]), tostring(v))
+  end
+end
+-- Paddy's calibration (docs/calibration.md "Results": surrogate, 10 mm, 0.0804 T_R, no damping factor).
+local calibrated = {jkr_surface_energy = 0.0077, mud_steel_friction = 0.693, mud_mud_friction = 0.183,
+                    mud_mud_rolling_friction = 0.022, mud_mud_restitution = 0.055, mud_steel_restitution = 0.3,
+                    mud_steel_rolling_friction = 0.055}
+-- The reference's EDEM calibration (shared/reference/README.md, step 4).
+local reference = {mud_mud_restitution = 0.13, mud_steel_friction = 0.6, jkr_surface_energy = 0.096,
+                   mud_mud_friction = 0.15, mud_mud_rolling_friction = 0.125, mud_steel_restitution = 0.3,
+                   mud_steel_rolling_friction = 0.055}
+
+-- Defaults: paddy conventions, Paddy's calibration at its calibration step.
+local V = mud.resolve(declared(), {})
+same(V, calibrated, "default")
+check(V.material_info.name == "paddy_calibrated" and V.material_info.conventions == "paddy", "default set %s", V.material_info.name)
+check(V.timestep_fraction == 0.0804 and V.timestep_damping == false, "default step %g / %s", V.timestep_fraction, tostring(V.timestep_damping))
+check(V.material_info.source:find("docs/calibration.md", 1, true), "the source names the calibration")
+-- The declared defaults are the default set's, so --help and the run's metadata agree with it.
+for _, e in ipairs(mud.contact) do check(e.default == calibrated[e.name], "declared default of %s", e.name) end
+
+-- edem conventions: the reference's EDEM values at EDEM's recommended 0.2 T_R.
+V = mud.resolve(declared{contact_conventions = "edem"}, {})
+same(V, reference, "edem")
+check(V.material_info.name == "reference_edem", "edem set %s", V.material_info.name)
+check(V.timestep_fraction == 0.2, "edem step %g", V.timestep_fraction)
+
+-- A set by name in the other conventions: its values, the conventions' step (it was calibrated elsewhere).
+V = mud.resolve(declared{material = "reference_edem"}, {})
+same(V, reference, "paddy + reference_edem")
+check(V.timestep_fraction == 0.1 and V.timestep_damping == true, "paddy + reference_edem step %g", V.timestep_fraction)
+V = mud.resolve(declared{contact_conventions = "edem", material = "paddy_calibrated"}, {})
+same(V, calibrated, "edem + paddy_calibrated")
+check(V.timestep_fraction == 0.2, "edem + paddy_calibrated step %g", V.timestep_fraction)
+
+-- --set wins: a given contact parameter is kept, the rest from the set, and the set's
+-- calibration step no longer applies (the set is not used as calibrated).
+V = mud.resolve(declared{mud_mud_friction = 0.3}, {mud_mud_friction = "0.3"})
+check(V.mud_mud_friction == 0.3 and V.jkr_surface_energy == 0.0077, "given friction %g, gamma %g", V.mud_mud_friction, V.jkr_surface_energy)
+check(V.timestep_fraction == 0.1 and V.timestep_damping == true, "step with a given parameter %g", V.timestep_fraction)
+check(#V.material_info.given == 1 and V.material_info.given[1] == "mud_mud_friction", "given list")
+V = mud.resolve(declared{timestep_fraction = 0.05}, {timestep_fraction = "0.05"})
+check(V.timestep_fraction == 0.05 and V.timestep_damping == false, "given step %g / %s", V.timestep_fraction, tostring(V.timestep_damping))
+
+-- Refusals name the parameter, the value and the choices; the resolved table refuses typos.
+local ok, msg = pcall(mud.resolve, declared{contact_conventions = "lammps"}, {})
+check(not ok and msg:find("contact_conventions = 'lammps'", 1, true) and msg:find("paddy, edem", 1, true), "bad conventions: %s", tostring(msg))
+ok, msg = pcall(mud.resolve, declared{material = "clay"}, {})
+check(not ok and msg:find("material = 'clay'", 1, true) and msg:find("paddy_mud.json", 1, true), "bad material: %s", tostring(msg))
+check(not pcall(function() return mud.resolve(declared(), {}).mud_mud_fricton end), "a typo must fail")
+
+-- The sub-models each conventions selects (a stand-in simulation records the interactions).
+local function laws(conventions)
+  local rec = {}
+  local sim = {material = function(_, m) return m.name end,
+               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end}
+  local P = mud.resolve(declared{contact_conventions = conventions}, {})
+  mud.setup(sim, P, P)
+  return rec
+end
+local p, e = laws("paddy"), laws("edem")
+check(p["mud-mud"].rolling == "constant_torque" and p["mud-steel"].rolling == "constant_torque", "paddy rolling")
+check(p["mud-mud"].jkr_overlap_stiffness == 0, "paddy JKR stiffness from the contact radius")
+check(e["mud-mud"].rolling == "constant_torque_explicit" and e["mud-steel"].rolling == "constant_torque_explicit", "edem rolling")
+check(e["mud-mud"].jkr_overlap_stiffness == 1, "edem JKR stiffness from the overlap")
+check(e["mud-mud"].surface_energy == reference.jkr_surface_energy, "edem gamma %g", e["mud-mud"].surface_energy)
+
+-- The calibration input's conventions key: default paddy, edem accepted, anything else refused.
+local t = paddy.read_json((mud.materials_file:gsub("materials/paddy_mud%.json$", "calibration/paddy_mud.json")))
+check(input_file.read(paddy.write_json("cal_default.json", t)).conventions == "paddy", "input default")
+t.conventions = "edem"
+check(input_file.read(paddy.write_json("cal_edem.json", t)).conventions == "edem", "input edem")
+t.conventions = "liggghts"
+ok, msg = pcall(input_file.read, paddy.write_json("cal_bad.json", t))
+check(not ok and msg:find("conventions = liggghts", 1, true) and msg:find("cal_bad.json", 1, true), "bad input conventions: %s", tostring(msg))
+
+paddy.result{ok = true}
