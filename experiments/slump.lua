@@ -285,8 +285,13 @@ end
 
 local reference_params = {}
 for _, e in ipairs(mud.contact) do reference_params[e.name] = P[e.name] end
+-- Yield stress the slump implies (Schowalter & Christensen 1998 cone model, docs/measurement.md);
+-- bulk density = particle density × solid fraction in the cone. nil when the slump is outside (0, H).
+local tau_ok, yield_stress = pcall(require("paddy.measure").slump_yield_stress, {slump = final.slump, density = P.mud_density * fill_solid,
+  height = H, top_diameter = P.cone_top_diameter, bottom_diameter = P.cone_bottom_diameter})
 paddy.result{
   slump_mm = final.slump * 1000,
+  yield_stress_Pa = tau_ok and yield_stress or nil,
   slump_flow_mm = flow.diameter_fit * 1000,          -- image + circle fit (as the reference study)
   slump_flow_ruler_mm = flow.ruler.mean * 1000,      -- two perpendicular diameters (GB/T 50080)
   slump_flow_ruler = {d1_mm = flow.ruler.d1 * 1000, d2_mm = flow.ruler.d2 * 1000, angle_deg = math.deg(flow.ruler.angle)},

@@ -106,5 +106,28 @@ local unknown_ok, unknown_msg = pcall(paddy.coarse_grain, {alpha = 2, params = {
 check("unknown parameter refused", not unknown_ok and tostring(unknown_msg):find("lift_speed", 1, true))
 near("rayleigh time ratio", measure.rayleigh_time(0.005, 1680, 1e6, 0.5) / measure.rayleigh_time(0.001, 1680, 1e6, 0.5), 5, 1e-12)
 
+-- Rheometer criteria and yield stresses through Lua (closed forms in tests/measure/).
+local ang, ramp, flat = {}, {}, {}
+for k = 0, 200 do ang[#ang + 1] = math.rad(k * 0.5); ramp[#ramp + 1] = 0.1 * math.rad(k * 0.5); flat[#flat + 1] = 0.2 end
+local st = measure.steady_torque{angle = ang, torque = ramp}
+check("ramp not steady", st.steady == false and st.reason:find("trend", 1, true) and st.compared_windows == 6)
+near("ramp trend", st.trend, 0.1, 1e-9)
+st = measure.steady_torque{angle = ang, torque = flat, min_angle = math.rad(30)}
+check("constant steady", st.steady == true and st.reason == "" and #st.window_means == 6)
+near("constant mean", st.mean, 0.2, 1e-15)
+local bad_ok, bad_msg = pcall(measure.steady_torque, {angle = ang, torque = flat, windows = 2})
+check("windows = 2 refused", not bad_ok and tostring(bad_msg):find("windows = 2", 1, true))
+local vane = {diameter = 0.05, height = 0.06, cup_diameter = 0.1}
+local su = measure.vane_startup{vane = vane, angle = ang, torque = ramp, smoothing_angle = 0}
+check("rising start-up: peak not reached", su.peak_reached == false)
+near("start-up yield stress", su.yield_stress, ramp[#ramp] / measure.vane_torque_factor(vane), 1e-12)
+-- Pashias cylinder: τ' = 0.1 → s/H = 0.478112; the cone inverts its own forward model.
+near("Pashias slump", measure.slump_of_yield_stress{yield_stress = 0.1 * 1500 * 9.81 * 0.2, density = 1500, height = 0.2,
+     top_diameter = 0.1, bottom_diameter = 0.1} / 0.2, 0.4781122, 1e-6)
+local s_cone = measure.slump_of_yield_stress{yield_stress = 400, density = 1000}
+near("cone round trip", measure.slump_yield_stress{slump = s_cone, density = 1000}, 400, 1e-6)
+local s_ok, s_msg = pcall(measure.slump_yield_stress, {slump = 0.35, density = 1000})
+check("slump above the cone refused", not s_ok and tostring(s_msg):find("0 < slump < 0.3", 1, true))
+
 paddy.result{ok = true, particles = n, pile_height = sl.pile_height, slump_flow = flow.diameter_fit,
              ruler = flow.ruler.mean, hb = fit, scaled = scaled}

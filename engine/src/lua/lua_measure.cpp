@@ -16,7 +16,8 @@
 //   require("paddy.measure") — the same three (measure.slump_height(sim, {...}), ...) and the
 //     array functions: herschel_bulkley, herschel_bulkley_stress, vane_torque_factor,
 //     vane_shear_stress, vane_torque, vane_shear_rate, vane_flow_curve, vane_torque_hb,
-//     rpm_to_rad, slump, relative_error, relative_errors, coarse_grain, scaling_laws,
+//     rpm_to_rad, steady_torque, vane_startup, slump_yield_stress, slump_of_yield_stress,
+//     slump, relative_error, relative_errors, coarse_grain, scaling_laws,
 //     rayleigh_time, jkr_pull_off_force.
 //   paddy.coarse_grain{alpha=, params={...}, laws={name = exponent | {exponent=, reason=} |
 //                      "law name"}} → scaled params, rows (one per parameter)
@@ -30,6 +31,9 @@
 #include <paddy/errors.hpp>
 #include <paddy/lua/runtime.hpp>
 #include <paddy/measure/measure.hpp>
+#include <paddy/measure/slump_yield_stress.hpp>
+#include <paddy/measure/steady_torque.hpp>
+#include <paddy/measure/vane_startup.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -398,6 +402,108 @@ int vaneTorqueHb(lua_State* L) {
   lua_pushnumber(L, pm::vaneTorqueHerschelBulkley(toNumber(L, 3, "measure.vane_torque_hb: omega"), m, v));
   return 1;
 }
+// steady_torque{angle={...} [rad from the step start], torque={...} [N m], window_angle=, windows=,
+//               min_angle=, alpha=, drift_tolerance=}
+//   → {steady, reason, angle, complete_windows, compared_windows, mean, standard_error, trend,
+//      trend_standard_error, trend_p_value, drift, window_means={...}}   (steady_torque.hpp)
+int steadyTorque(lua_State* L) {
+  OptionTable opt(L, 1, "measure.steady_torque");
+  pm::SteadyTorqueOptions o;
+  o.window_angle = opt.number("window_angle", o.window_angle);
+  o.windows = static_cast<int>(opt.integer("windows", o.windows));
+  o.min_angle = opt.number("min_angle", o.min_angle);
+  o.alpha = opt.number("alpha", o.alpha);
+  o.drift_tolerance = opt.number("drift_tolerance", o.drift_tolerance);
+  opt.push("angle");
+  const auto angle = toNumberArray(L, -1, "measure.steady_torque: angle");
+  lua_pop(L, 1);
+  opt.push("torque");
+  const auto torque = toNumberArray(L, -1, "measure.steady_torque: torque");
+  lua_pop(L, 1);
+  opt.finish();
+  const pm::SteadyTorqueResult r = pm::steadyTorque(angle, torque, o);
+  lua_createtable(L, 0, 12);
+  lua_pushboolean(L, r.steady);
+  lua_setfield(L, -2, "steady");
+  lua_pushstring(L, r.reason.c_str());
+  lua_setfield(L, -2, "reason");
+  setNumber(L, "angle", r.angle);
+  setInteger(L, "complete_windows", r.complete_windows);
+  setInteger(L, "compared_windows", r.compared_windows);
+  setNumber(L, "mean", r.mean);
+  setNumber(L, "standard_error", r.standard_error);
+  setNumber(L, "trend", r.trend);
+  setNumber(L, "trend_standard_error", r.trend_standard_error);
+  setNumber(L, "trend_p_value", r.trend_p_value);
+  setNumber(L, "drift", r.drift);
+  pushNumberArray(L, r.window_means);
+  lua_setfield(L, -2, "window_means");
+  return 1;
+}
+// vane_startup{vane={...}, angle={...} [rad], torque={...} [N m], smoothing_angle=, drop_fraction=,
+//              plateau_angle=} → {peak_torque, peak_angle, peak_reached, final_torque,
+//              yield_stress, smoothed={...}}   (vane_startup.hpp)
+int vaneStartup(lua_State* L) {
+  OptionTable opt(L, 1, "measure.vane_startup");
+  opt.push("vane");
+  const auto v = readVane(L, -1, "measure.vane_startup");
+  lua_pop(L, 1);
+  pm::VaneStartupOptions o;
+  o.smoothing_angle = opt.number("smoothing_angle", o.smoothing_angle);
+  o.drop_fraction = opt.number("drop_fraction", o.drop_fraction);
+  o.plateau_angle = opt.number("plateau_angle", o.plateau_angle);
+  opt.push("angle");
+  const auto angle = toNumberArray(L, -1, "measure.vane_startup: angle");
+  lua_pop(L, 1);
+  opt.push("torque");
+  const auto torque = toNumberArray(L, -1, "measure.vane_startup: torque");
+  lua_pop(L, 1);
+  opt.finish();
+  const pm::VaneStartupResult r = pm::vaneStartup(angle, torque, v, o);
+  lua_createtable(L, 0, 6);
+  setNumber(L, "peak_torque", r.peak_torque);
+  setNumber(L, "peak_angle", r.peak_angle);
+  lua_pushboolean(L, r.peak_reached);
+  lua_setfield(L, -2, "peak_reached");
+  setNumber(L, "final_torque", r.final_torque);
+  setNumber(L, "yield_stress", r.yield_stress);
+  pushNumberArray(L, r.smoothed);
+  lua_setfield(L, -2, "smoothed");
+  return 1;
+}
+// Slump mould {height=0.3, top_diameter=0.1, bottom_diameter=0.2} (GB/T 50080 cone by default)
+// read from the same table as density= and gravity=9.81.
+pm::SlumpMould readMould(OptionTable& opt) {
+  pm::SlumpMould m;
+  m.height = opt.number("height", m.height);
+  m.top_diameter = opt.number("top_diameter", m.top_diameter);
+  m.bottom_diameter = opt.number("bottom_diameter", m.bottom_diameter);
+  return m;
+}
+// slump_yield_stress{slump= [m], density= [kg/m^3], gravity=9.81, height=, top_diameter=,
+//                    bottom_diameter=} → τ_y [Pa]   (slump_yield_stress.hpp)
+int slumpYieldStress(lua_State* L) {
+  OptionTable opt(L, 1, "measure.slump_yield_stress");
+  const double s = opt.number("slump");
+  const double rho = opt.number("density");
+  const double g = opt.number("gravity", 9.81);
+  const pm::SlumpMould m = readMould(opt);
+  opt.finish();
+  lua_pushnumber(L, pm::yieldStressFromSlump(s, rho, g, m));
+  return 1;
+}
+// slump_of_yield_stress{yield_stress= [Pa], density=, gravity=9.81, height=, ...} → slump [m]
+int slumpOfYieldStress(lua_State* L) {
+  OptionTable opt(L, 1, "measure.slump_of_yield_stress");
+  const double tau = opt.number("yield_stress");
+  const double rho = opt.number("density");
+  const double g = opt.number("gravity", 9.81);
+  const pm::SlumpMould m = readMould(opt);
+  opt.finish();
+  lua_pushnumber(L, pm::slumpFromYieldStress(tau, rho, g, m));
+  return 1;
+}
+
 int rpmToRad(lua_State* L) {
   lua_pushnumber(L, pm::rpmToRadPerSecond(toNumber(L, 1, "measure.rpm_to_rad: rpm")));
   return 1;
@@ -576,6 +682,10 @@ const luaL_Reg kModule[] = {
     {"vane_flow_curve", &guarded<vaneFlowCurve>},
     {"vane_torque_hb", &guarded<vaneTorqueHb>},
     {"rpm_to_rad", &guarded<rpmToRad>},
+    {"steady_torque", &guarded<steadyTorque>},
+    {"vane_startup", &guarded<vaneStartup>},
+    {"slump_yield_stress", &guarded<slumpYieldStress>},
+    {"slump_of_yield_stress", &guarded<slumpOfYieldStress>},
     {"slump", &guarded<slumpOf>},
     {"relative_error", &guarded<relativeError>},
     {"relative_errors", &guarded<relativeErrors>},
