@@ -25,6 +25,7 @@ local mud = require("lib.mud")
 local pour = require("lib.pour")
 local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
+local observables = require("lib.slump_observables")
 
 local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04,
@@ -49,6 +50,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "clearance", default = 0.02, unit = "m", min = 0, max = 0.3, description = "the lift stops this far above the pile top"},
   {name = "max_time", default = 5.0, unit = "s", min = 0.01, max = 60, description = "time limit from the start of the lift"},
   {name = "history_interval", default = 0.05, unit = "s", min = 0.001, max = 1, description = "slump history sampling"},
+  {name = "load_interval", default = 0.005, unit = "s", min = 1e-5, max = 1, description = "sampling of the force on the cone during the lift (cone_force_N)"},
   {name = "snapshot_interval", default = 0.25, unit = "s", min = 0, max = 10, description = "snapshots for ParaView (0: none)"},
   {name = "pixel", default = 0.001, unit = "m", min = 1e-5, max = 0.01, description = "pixel of the top-view image"},
   {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
@@ -119,13 +121,18 @@ io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 
 -- Highest particle top (z + r) under the cone's bottom ring (those the rising cone could touch).
-local function top_under_cone()
+-- During the lift (lifting = true) spheres that move up with the cone (stuck to its inside:
+-- lib/slump_observables.lua) do not count: the cone carries them, the pile is below.
+local function top_under_cone(lifting)
   local xs, ys, zs = sim:xyz()
   local radii = sim:radii()
+  local v = lifting and sim:velocities() or nil
   local top = 0
   for i = 1, #xs do
     local r = radii[i]
-    if xs[i] ^ 2 + ys[i] ^ 2 < (R_bottom + r) ^ 2 then top = math.max(top, zs[i] + r) end
+    if xs[i] ^ 2 + ys[i] ^ 2 < (R_bottom + r) ^ 2 and not (v and observables.moving_with_cone(v[i][3], P.lift_speed)) then
+      top = math.max(top, zs[i] + r)
+    end
   end
   return top
 end
@@ -172,6 +179,11 @@ local initial = measure_slump()
 local t_lift = sim:time()
 local lift_stop, rest_time, at_rest, rest_criterion = nil, nil, false, nil
 local history = {}
+local carried  -- mud moving up with the cone as the lift stops (or at the end, if it never stops)
+local function measure_carried(cone_z)
+  return observables.carried_by_cone(sim, {lift_speed = P.lift_speed, z_bottom = cone_z, radius_bottom = R_bottom,
+                                           radius_top = R_top, height = H, density = P.mud_density})
+end
 if cone then
   sim:set_motion(cone, {type = "translate", velocity = {0, 0, P.lift_speed}, start = t_lift})
 else
@@ -187,7 +199,8 @@ local function sample(s)
                            slump_flow_mm = spread.diameter_fit * 1000, rms_speed = v,
                            cone_bottom_mm = cone_z and cone_z * 1000 or nil}
   if not lift_stop then
-    if cone_z > top_under_cone() + P.clearance then
+    if cone_z > top_under_cone(true) + P.clearance then
+      carried = measure_carried(cone_z)
       sim:set_motion(cone, {type = "fixed"})
       lift_stop = t
       io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm\n", t - t_lift, cone_z * 1000))
@@ -216,7 +229,9 @@ local function sample(s)
 end
 sample(sim)
 sim:run{duration = P.max_time, every = P.history_interval, snapshot_every = snapshot_every,
+        record_loads_every = cone and P.load_interval or nil, record_loads = cone and {cone} or nil,
         progress = P.progress, callback = sample}
+if cone and not carried then carried = measure_carried(P.lift_speed * (sim:time() - t_lift)) end
 if not at_rest then
   io.stderr:write(string.format("warning: slump: the pile is not at rest after max_time = %g s (RMS speed %.3g m/s)%s\n",
                                 P.max_time, util.rms_speed(sim, mass),
@@ -233,6 +248,11 @@ local flow = sim:measure_slump_flow{
   pgm = "slump_flow_top.pgm",
 }
 local profile = sim:measure_profile{axis = {0, 0}, base_z = 0, largest_cluster = true}
+-- Observables on fixed grids (the same in every run; lib/slump_observables.lua).
+local profile_grid = observables.profile(sim)
+local history_grid = observables.history_at(history, observables.HISTORY_TIMES)
+local cone_force = cone and observables.cone_force(sim:wall_load_history(cone), t_lift, lift_stop or sim:time())
+                   or {mean = 0, peak = 0, samples = 0}
 local profile_out = {}
 for k, b in ipairs(profile) do
   profile_out[k] = {r_mm = b.r * 1000, h_mm = b.h * 1000, coverage = b.coverage, particles = b.particles}
@@ -302,6 +322,13 @@ paddy.result{
   initial_slump_mm = initial.slump * 1000,
   profile = profile_out,
   history = history,
+  profile_mm = profile_grid.h_mm,                  -- h(r) at profile_radii_mm (fixed grid)
+  profile_radii_mm = profile_grid.radii_mm,
+  history_mm = history_grid,                       -- slump at history_times_s after the lift starts
+  history_times_s = observables.HISTORY_TIMES,
+  cone_force_N = {mean = cone_force.mean, peak = cone_force.peak, samples = cone_force.samples},  -- downward, during the lift
+  mass_on_cone_g = carried and carried.mass_g or 0,  -- mud moving up with the cone as the lift stops
+  particles_on_cone = carried and carried.count or 0,
   measured = {slump_mm = 231, slump_flow_mm = 480},
   at_rest = at_rest,
   rest_time_s = rest_time,

@@ -3,23 +3,37 @@
 -- every error names the file and the entry. Format: docs/calibration.md.
 local M = {}
 
-local function fail(path, what)
-  error(string.format("calibration input '%s': %s", path, what), 0)
-end
-
-local function number(path, where, v, lo, hi)
-  if type(v) ~= "number" or v ~= v then fail(path, where .. " must be a number") end
-  if (lo and v < lo) or (hi and v > hi) then
-    fail(path, string.format("%s = %g is outside the allowed range [%s, %s]", where, v, tostring(lo or "-inf"), tostring(hi or "inf")))
+-- The checks, for any kind of input file ("calibration input", "discovery input", ...): every
+-- message names the kind, the file and the entry.
+local function checks(kind)
+  local function fail(path, what)
+    error(string.format("%s '%s': %s", kind, path, what), 0)
   end
-  return v
-end
 
-local function range(path, where, v)
-  if type(v) ~= "table" or #v ~= 2 then fail(path, where .. " must be [low, high]") end
-  number(path, where .. "[1]", v[1]); number(path, where .. "[2]", v[2])
-  if not (v[2] > v[1]) then fail(path, where .. ": high must be greater than low") end
-  return {v[1], v[2]}
+  local function number(path, where, v, lo, hi)
+    if type(v) ~= "number" or v ~= v then fail(path, where .. " must be a number") end
+    if (lo and v < lo) or (hi and v > hi) then
+      fail(path, string.format("%s = %g is outside the allowed range [%s, %s]", where, v, tostring(lo or "-inf"), tostring(hi or "inf")))
+    end
+    return v
+  end
+
+  local function range(path, where, v)
+    if type(v) ~= "table" or #v ~= 2 then fail(path, where .. " must be [low, high]") end
+    number(path, where .. "[1]", v[1]); number(path, where .. "[2]", v[2])
+    if not (v[2] > v[1]) then fail(path, where .. ": high must be greater than low") end
+    return {v[1], v[2]}
+  end
+
+  return fail, number, range
+end
+local fail, number, range = checks("calibration input")
+
+-- For other input files: local c = require("lib.calibration.input").checks("discovery input");
+-- c.fail(path, what), c.number(path, where, v, lo, hi), c.range(path, where, {lo, hi}).
+function M.checks(kind)
+  local f, n, r = checks(kind)
+  return {fail = f, number = n, range = r}
 end
 
 local function section(t, name, defaults)

@@ -1,0 +1,321 @@
+-- Find what the model is missing: the step after a calibration that does not fit.
+-- Documentation: docs/discovery.md ("The workflow"; the statistics in "The statistics").
+--
+--   paddy run experiments/discover.lua --set input=FILE.json --out DIR
+--
+-- The input file lists experiments (slump.lua, rheometer.lua at given settings) with measured
+-- observables and their standard deviations, the free parameters and the candidate effects (a
+-- parameter each, strength 0 = today's model). Every simulation is a campaign job keyed by its
+-- content (docs/campaign.md): running the same command again after an interruption repeats
+-- nothing that finished. Steps, each a block below and a section of DIR/report.html:
+--   1. Calibrate the free parameters to all measurements: Gauss-Newton (paddy.doe.gauss_newton)
+--      on forward differences with common random numbers (the same seed at θ and θ + h), bounded.
+--   2. Locate: replicates at θ̂ (other seeds) give the seed scatter; with the measurement sigma,
+--      the noise covariance (paddy.doe.noise_covariance); standardised residual per observable
+--      and the global misfit test.
+--   3. Name: each candidate's signature at zero strength (secant to a probe strength, the same
+--      seeds as replicates, averaged over signature_seeds) and paddy.doe.diagnose.
+--   4. Add and recalibrate: the named effect with the free parameters jointly (Gauss-Newton),
+--      confirmed at new seeds; its strength with an interval, misfit before and after,
+--      paddy.doe.compare_fits.
+--   5. Report: DIR/result.json and DIR/report.html.
+-- Observables are standardised by their measurement sigma (lib/discovery/stack.lua): residuals,
+-- Jacobians and signatures are in units of sigma.
+local doe = require("paddy.doe")
+local mud = require("lib.mud")
+local jobs = require("lib.calibration.jobs")
+local input_file = require("lib.discovery.input")
+local stack = require("lib.discovery.stack")
+local report = require("lib.discovery.report")
+
+local P = paddy.parameters{
+  {name = "input", default = "", description = "discovery input file (JSON; docs/discovery.md)"},
+  {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of every simulation"},
+  {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping; one step for all runs, shortened for the lowest restitution any run may use"},
+  {name = "experiment_params", default = "", description = "further parameters for every run, 'name=value,name=value' (parameters both scripts accept)"},
+  {name = "max_parallel", default = 0, type = "integer", min = 0, max = 1024, description = "simulations at once (0: cores / threads_per_job)"},
+  {name = "threads_per_job", default = 1, type = "integer", min = 1, max = 256, description = "threads of each simulation"},
+  {name = "campaign_dir", default = "", description = "where the jobs are kept ('' = <out>/campaign)"},
+  {name = "code_version", default = "", description = "fixed code version for the job keys ('' = hash of the binaries)"},
+  {name = "pictures", default = true, description = "figures of the report (gnuplot)"},
+}
+if P.input == "" then error("discover.lua: give the input file: --set input=FILE.json (schema: docs/discovery.md)", 0) end
+
+local wall_start = os.time()
+-- The experiment scripts live beside this one (experiments/), wherever the workflow is started from.
+local here = (debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$")) or "."
+local input = input_file.read(P.input)
+for _, f in ipairs({"gauss_newton", "noise_covariance", "diagnose", "compare_fits"}) do
+  if type(doe[f]) ~= "function" then
+    error("discover.lua: this build has no paddy.doe." .. f .. " (the statistics of docs/discovery.md)", 0)
+  end
+end
+local S = input.settings
+local seed0 = paddy.seed
+local function say(fmt, ...) io.stderr:write("discovery: ", string.format(fmt, ...), "\n") end
+
+-- One time step for every run (as the calibration: the slump depends on the step, so a step that
+-- changed with a restitution would add its own effect): the damping-aware step at the lowest
+-- restitution any run may use.
+local e_low = math.huge
+for _, e in ipairs(mud.contact) do
+  if e.name:match("restitution$") then e_low = math.min(e_low, e.default) end
+end
+for _, list in ipairs({input.free_parameters, input.candidates}) do
+  for _, f in ipairs(list) do
+    if f.parameter:match("restitution$") then e_low = math.min(e_low, f.low > 0 and f.low or e_low) end
+  end
+end
+for _, e in ipairs(input.experiments) do
+  for k, v in pairs(e.set) do if k:match("restitution$") and type(v) == "number" then e_low = math.min(e_low, v) end end
+end
+local fixed = {particle_diameter = P.particle_diameter, pictures = false, snapshot_interval = 0, progress = false,
+               timestep_fraction = P.timestep_fraction * mud.timestep_factor(e_low), timestep_damping = false}
+local util = require("lib.util")
+for k, v in pairs(util.assignments(P.experiment_params, "experiment_params")) do fixed[k] = v end
+
+local campaign = paddy.campaign{
+  dir = P.campaign_dir ~= "" and P.campaign_dir or nil, executor = "local",
+  max_parallel = P.max_parallel > 0 and P.max_parallel or nil, threads_per_job = P.threads_per_job,
+  code_version = P.code_version ~= "" and P.code_version or nil,
+}
+local runner = jobs.new{campaign = campaign, script = "slump.lua", fixed = fixed, responses = {}}
+local L = stack.layout(input)
+local y = stack.measured(L)
+local m = #L
+local free, cands = input.free_parameters, input.candidates
+local p = #free
+local labels, blocks = {}, {}
+for i, l in ipairs(L) do labels[i], blocks[i] = l.label, l.block end
+
+-- Simulations of model points: a point {theta = {value per free parameter}, lambda = {name = strength},
+-- seed =, label =} runs every experiment; → one stacked standardised vector per point.
+local first_results
+local function evaluate(stage, points)
+  local jp = {}
+  for _, pt in ipairs(points) do
+    for _, e in ipairs(input.experiments) do
+      local params = {}
+      for k, v in pairs(e.set) do params[k] = v end
+      for j, f in ipairs(free) do params[f.parameter] = pt.theta[j] end
+      for _, c in ipairs(cands) do params[c.parameter] = (pt.lambda or {})[c.name] or 0 end
+      jp[#jp + 1] = {script = here .. "/" .. e.script, params = params, seed = pt.seed, label = (pt.label or "") .. " " .. e.name, responses = {}}
+    end
+  end
+  local rows = runner:run(stage, jp)
+  local out, res, k = {}, {}, 0
+  for i, pt in ipairs(points) do
+    local results = {}
+    for _, e in ipairs(input.experiments) do
+      k = k + 1
+      results[e.name] = rows[k].result
+    end
+    if not first_results then first_results = results; stack.label(L, results) end
+    out[i] = stack.simulated(L, results, stage .. " " .. (pt.label or i))
+    res[i] = results
+  end
+  return out, res
+end
+
+local lower, upper = {}, {}
+for j, f in ipairs(free) do lower[j], upper[j] = f.low, f.high end
+-- Forward-difference step of parameter j at theta: fd_step of its range, toward the inside.
+local function fd_step(lo, hi, v)
+  local h = S.fd_step * (hi - lo)
+  if v + h > hi then h = -h end
+  return h
+end
+-- f(point) and the Jacobian by forward differences at one seed (common random numbers).
+-- `dims` = {{get = value, set = function(pt, v), lo, hi}, ...}.
+local function jacobian_at(stage, base, dims)
+  local pts = {base}
+  local steps = {}
+  for j, d in ipairs(dims) do
+    steps[j] = fd_step(d.lo, d.hi, d.get(base))
+    local pt = d.shift(base, steps[j])
+    pt.label = base.label .. " +h" .. j
+    pts[#pts + 1] = pt
+  end
+  local f = evaluate(stage, pts)
+  local J = {}
+  for i = 1, m do
+    J[i] = {}
+    for j = 1, #dims do J[i][j] = (f[j + 1][i] - f[1][i]) / steps[j] end
+  end
+  return f[1], J, steps
+end
+local function copy_point(pt)
+  local theta, lambda = {}, {}
+  for j, v in ipairs(pt.theta) do theta[j] = v end
+  for k, v in pairs(pt.lambda or {}) do lambda[k] = v end
+  return {theta = theta, lambda = lambda, seed = pt.seed, label = pt.label}
+end
+local function theta_dims()
+  local dims = {}
+  for j, f in ipairs(free) do
+    dims[j] = {lo = f.low, hi = f.high, get = function(pt) return pt.theta[j] end,
+               shift = function(pt, h) local q = copy_point(pt); q.theta[j] = q.theta[j] + h; return q end}
+  end
+  return dims
+end
+local function identity(n)
+  local I = {}
+  for i = 1, n do I[i] = {}; for j = 1, n do I[i][j] = i == j and 1 or 0 end end
+  return I
+end
+local function fmt_theta(theta)
+  local t = {}
+  for j, f in ipairs(free) do t[j] = string.format("%s = %.4g", f.parameter, theta[j]) end
+  return #t > 0 and table.concat(t, ", ") or "(no free parameters)"
+end
+
+local outcome = {input = input, parameters = P, layout = L, measured = y, fixed = fixed}
+
+-----------------------------------------------------------------------------------------------
+-- 1. Calibrate the free parameters (measurement sigma as the weights: the seed scatter is not
+-- known yet).
+local theta = {}
+for j, f in ipairs(free) do theta[j] = f.start end
+local calib = {iterations = {}}
+local J, f_hat
+say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), %d Gauss-Newton iteration(s)",
+    p, m, #input.experiments, S.iterations)
+for it = 0, S.iterations do
+  local base = {theta = theta, lambda = {}, seed = seed0, label = "calibration " .. it}
+  local f
+  f, J = jacobian_at("calibration", base, theta_dims())
+  local r = stack.minus(y, f)
+  local rms = stack.rms_standardised(r, identity(m))
+  calib.iterations[#calib.iterations + 1] = {iteration = it, theta = theta, rms_sigma = rms}
+  say("   iteration %d: %s, RMS residual %.3g sigma", it, fmt_theta(theta), rms)
+  f_hat = f
+  if it == S.iterations or p == 0 then break end
+  local step = doe.gauss_newton{theta = theta, residual = r, jacobian = J, covariance = identity(m), lower = lower, upper = upper, damping = 0}
+  theta = step.theta
+end
+calib.theta = theta
+outcome.calibration = calib
+
+-----------------------------------------------------------------------------------------------
+-- 2. Locate: replicates at θ̂, noise covariance, standardised residuals, global misfit.
+say("2. %d replicates at the calibrated parameters", S.replicates)
+local rep_points = {}
+for k = 1, S.replicates do rep_points[k] = {theta = theta, lambda = {}, seed = seed0 + 100 + k, label = "replicate " .. k} end
+local reps, rep_results = evaluate("replicates", rep_points)
+local f_bar = stack.mean(reps)
+local r0 = stack.minus(y, f_bar)
+local noise = doe.noise_covariance{replicates = reps, sigma = (function() local s = {}; for i = 1, m do s[i] = 1 end; return s end)(),
+                                   n_avg = S.replicates}
+local cov = noise.covariance
+local located = {}
+for i, l in ipairs(L) do
+  located[i] = {label = l.label, block = l.block, key = l.key, index = l.index, axis = l.axis, measured = l.measured,
+                simulated = f_bar[i] * l.sigma, z = r0[i] / math.sqrt(cov[i][i])}
+end
+outcome.located = {residuals = located, noise = noise, rms = stack.rms_standardised(r0, cov)}
+say("   RMS standardised residual %.3g (seed scatter shrinkage %.3g)", outcome.located.rms, noise.shrinkage or 0 / 0)
+
+-----------------------------------------------------------------------------------------------
+-- 3. Name: signatures at zero strength and the diagnosis.
+say("3. signatures of %d candidate(s), %d seed(s) each", #cands, S.signature_seeds)
+local sig_points = {}
+for _, c in ipairs(cands) do
+  for s = 1, S.signature_seeds do
+    sig_points[#sig_points + 1] = {theta = theta, lambda = {[c.name] = c.probe}, seed = rep_points[s].seed,
+                                   label = string.format("%s probe seed %d", c.name, s), candidate = c, s = s}
+  end
+end
+local sig_runs = evaluate("signatures", sig_points)
+local signatures, dcands = {}, {}
+for k, c in ipairs(cands) do
+  local g = {}
+  for i = 1, m do g[i] = 0 end
+  for n, pt in ipairs(sig_points) do
+    if pt.candidate == c then
+      for i = 1, m do g[i] = g[i] + (sig_runs[n][i] - reps[pt.s][i]) / c.probe / S.signature_seeds end
+    end
+  end
+  signatures[c.name] = g
+  dcands[k] = {name = c.name, signature = g, low = c.low, high = c.high}
+end
+local diag = doe.diagnose{residual = r0, covariance = cov, jacobian = J, candidates = dcands, labels = labels, blocks = blocks,
+                          alpha = S.alpha, confusable = S.confusable}
+say("   decision: %s%s (Q0 = %.4g on %s df, p = %.3g)", diag.decision, diag.named and (" - " .. diag.named) or "",
+    diag.q0 or 0 / 0, tostring(diag.q0_df), diag.q0_p or 0 / 0)
+for _, c in ipairs(diag.candidates or {}) do
+  say("   %-24s z = %7.3f  p_holm = %.3g  strength %.4g +- %.3g", c.name, c.z or 0 / 0, c.p_holm or 0 / 0, c.strength or 0 / 0, c.strength_se or 0 / 0)
+end
+outcome.signatures, outcome.diagnosis = signatures, diag
+
+-----------------------------------------------------------------------------------------------
+-- 4. Add the named effect and recalibrate jointly; confirm at new seeds.
+local named = diag.decision == "effect" and diag.named or nil
+local after
+if named then
+  local c
+  for _, x in ipairs(cands) do if x.name == named then c = x end end
+  local est
+  for _, x in ipairs(diag.candidates) do if x.name == named then est = x end end
+  local lam = math.min(c.high, math.max(c.low, est and est.strength or c.probe))
+  if lam <= 0 then lam = c.probe end
+  local dims = theta_dims()
+  dims[#dims + 1] = {lo = c.low, hi = c.high, get = function(pt) return pt.lambda[named] end,
+                     shift = function(pt, h) local q = copy_point(pt); q.lambda[named] = q.lambda[named] + h; return q end}
+  local lo2, hi2 = {}, {}
+  for j, d in ipairs(dims) do lo2[j], hi2[j] = d.lo, d.hi end
+  local joint = {theta = theta, lambda = lam, iterations = {}}
+  say("4. recalibration with %s (start %.4g)", named, lam)
+  local last
+  for it = 1, math.max(1, S.iterations) do
+    local base = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0, label = "joint " .. it}
+    local f, Jj = jacobian_at("recalibration", base, dims)
+    local r = stack.minus(y, f)
+    local x = {}
+    for j = 1, p do x[j] = joint.theta[j] end
+    x[p + 1] = joint.lambda
+    last = doe.gauss_newton{theta = x, residual = r, jacobian = Jj, covariance = cov, lower = lo2, upper = hi2, damping = 0}
+    local t = {}
+    for j = 1, p do t[j] = last.theta[j] end
+    joint.theta, joint.lambda = t, last.theta[p + 1]
+    joint.iterations[#joint.iterations + 1] = {iteration = it, theta = t, lambda = joint.lambda}
+    say("   iteration %d: %s, %s = %.4g", it, fmt_theta(t), named, joint.lambda)
+  end
+  local conf_points = {}
+  for k = 1, S.confirm_seeds do
+    conf_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 200 + k, label = "confirmation " .. k}
+  end
+  local conf, conf_results = evaluate("confirmation", conf_points)
+  local f_after = stack.mean(conf)
+  local r1 = stack.minus(y, f_after)
+  local noise_after = doe.noise_covariance{replicates = reps, sigma = (function() local s = {}; for i = 1, m do s[i] = 1 end; return s end)(),
+                                           n_avg = S.confirm_seeds}
+  local rest = {}
+  for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
+  local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J, candidates = rest,
+                                                labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable} or nil
+  local se = last.se and last.se[p + 1] or 0
+  after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
+                                            high = math.min(c.high, joint.lambda + 1.96 * se), se = se},
+           joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
+           rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results}
+  if diag_after then
+    after.comparison = doe.compare_fits{q_before = diag.misfit, q_after = diag_after.misfit, df = 1, n = m, k_before = p, k_after = p + 1}
+  end
+  say("   %s = %.4g [%.4g, %.4g]; RMS standardised residual %.3g -> %.3g", named, after.strength.value, after.strength.low,
+      after.strength.high, outcome.located.rms, after.rms)
+  local z = {}
+  for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
+  after.z = z
+else
+  say("4. no effect named (%s): nothing to add", diag.decision)
+end
+outcome.after = after
+
+-----------------------------------------------------------------------------------------------
+-- 5. Report.
+outcome.simulations = runner.log
+outcome.replicates, outcome.replicate_results, outcome.f_bar, outcome.residual = reps, rep_results, f_bar, r0
+outcome.wall_time_s = os.difftime(os.time(), wall_start)
+local files = report.write{outcome = outcome, pictures = P.pictures}
+say("report: %s", files.html)
+paddy.result(report.summary(outcome, files))

@@ -1,0 +1,122 @@
+-- The discovery input file (JSON; schema in docs/discovery.md, "The workflow"): experiments with
+-- their settings, measured observables and measurement standard deviations, the free parameters
+-- to calibrate and the candidate effects. Checked on reading: every error names the file, the
+-- entry and the allowed values (checks shared with the calibration input, lib/calibration/input.lua).
+local check = require("lib.calibration.input").checks("discovery input")
+local fail, number = check.fail, check.number
+local M = {}
+
+local SCRIPTS = {["slump.lua"] = true, ["rheometer.lua"] = true}
+local NAME = "^[%a][%w_]*$"
+
+-- measured/sigma value: a number or a non-empty list of numbers (a vector observable).
+local function values(path, where, v)
+  if type(v) == "number" then return {number(path, where, v)}, false end
+  if type(v) ~= "table" or #v == 0 then fail(path, where .. " must be a number or a non-empty list of numbers") end
+  local out = {}
+  for i, x in ipairs(v) do out[i] = number(path, string.format("%s[%d]", where, i), x) end
+  return out, true
+end
+
+local function strength(path, where, e, t)
+  t.low = number(path, where .. ".low", e.low)
+  t.high = number(path, where .. ".high", e.high)
+  if not (t.high > t.low) then fail(path, string.format("%s: high = %g must be greater than low = %g", where, t.high, t.low)) end
+end
+
+-- Returns {path, experiments = {{name, script, set, observables = {{key, measured = {..}, sigma = {..},
+-- vector}}}}, free_parameters = {{parameter, low, high, start}}, candidates = {{name, parameter, low,
+-- high, probe}}, settings = {...}}.
+function M.read(path)
+  local ok, t = pcall(paddy.read_json, path)
+  if not ok then error((tostring(t):gsub("^%s+", "")), 0) end
+  if type(t) ~= "table" then fail(path, "the top level must be an object") end
+  local known = {experiments = true, free_parameters = true, candidates = true, description = true, settings = true}
+  for k in pairs(t) do
+    if not known[k] then fail(path, "unknown key '" .. tostring(k) .. "' (allowed: experiments, free_parameters, candidates, description, settings)") end
+  end
+  local input = {path = path, description = t.description or "", experiments = {}, free_parameters = {}, candidates = {}}
+
+  if type(t.experiments) ~= "table" or #t.experiments == 0 then fail(path, "'experiments' must be a non-empty list") end
+  local names = {}
+  for i, e in ipairs(t.experiments) do
+    local where = string.format("experiments[%d]", i)
+    if type(e.name) ~= "string" or not e.name:match(NAME) then fail(path, where .. ".name must be a name such as slump_slow") end
+    if names[e.name] then fail(path, where .. ": name '" .. e.name .. "' is used twice") end
+    names[e.name] = true
+    if not SCRIPTS[e.script] then fail(path, where .. ".script = " .. tostring(e.script) .. " (allowed: slump.lua, rheometer.lua)") end
+    if e.set ~= nil and type(e.set) ~= "table" then fail(path, where .. ".set must be an object {parameter = value}") end
+    for k, v in pairs(e.set or {}) do
+      if type(v) ~= "number" and type(v) ~= "string" and type(v) ~= "boolean" then
+        fail(path, string.format("%s.set.%s must be a number, string or boolean", where, tostring(k)))
+      end
+    end
+    if type(e.measured) ~= "table" or next(e.measured) == nil then fail(path, where .. ".measured must be an object {result key = value or list}") end
+    if type(e.sigma) ~= "table" then fail(path, where .. ".sigma must be an object with the keys of measured") end
+    local x = {name = e.name, script = e.script, set = e.set or {}, observables = {}}
+    local keys = {}
+    for key in pairs(e.measured) do keys[#keys + 1] = key end
+    table.sort(keys)
+    for _, key in ipairs(keys) do
+      local m, vec = values(path, where .. ".measured." .. key, e.measured[key])
+      if e.sigma[key] == nil then fail(path, string.format("%s.sigma.%s is missing (every measured key needs a sigma)", where, key)) end
+      local s = values(path, where .. ".sigma." .. key, e.sigma[key])
+      if #s == 1 and #m > 1 then for k = 2, #m do s[k] = s[1] end end
+      if #s ~= #m then fail(path, string.format("%s.sigma.%s has %d entries, measured.%s has %d (give one sigma or one per entry)", where, key, #s, key, #m)) end
+      for k, v in ipairs(s) do
+        if not (v > 0) then fail(path, string.format("%s.sigma.%s[%d] = %g must be > 0", where, key, k, v)) end
+      end
+      x.observables[#x.observables + 1] = {key = key, measured = m, sigma = s, vector = vec}
+    end
+    for key in pairs(e.sigma) do
+      if e.measured[key] == nil then fail(path, string.format("%s.sigma.%s has no measured value", where, key)) end
+    end
+    input.experiments[i] = x
+  end
+
+  local used = {}
+  if type(t.free_parameters) ~= "table" then fail(path, "'free_parameters' must be a list (it may be empty)") end
+  for i, f in ipairs(t.free_parameters) do
+    local where = string.format("free_parameters[%d]", i)
+    if type(f.parameter) ~= "string" or not f.parameter:match(NAME) then fail(path, where .. ".parameter must name a parameter of the experiments") end
+    if used[f.parameter] then fail(path, where .. ": parameter '" .. f.parameter .. "' is used twice") end
+    used[f.parameter] = true
+    local x = {parameter = f.parameter}
+    strength(path, where, f, x)
+    x.start = f.start and number(path, where .. ".start", f.start, x.low, x.high) or (x.low + x.high) / 2
+    input.free_parameters[i] = x
+  end
+
+  if type(t.candidates) ~= "table" or #t.candidates == 0 then fail(path, "'candidates' must be a non-empty list") end
+  local cnames = {}
+  for i, c in ipairs(t.candidates) do
+    local where = string.format("candidates[%d]", i)
+    if type(c.name) ~= "string" or not c.name:match(NAME) then fail(path, where .. ".name must be a name such as wall_adhesion") end
+    if cnames[c.name] then fail(path, where .. ": name '" .. c.name .. "' is used twice") end
+    cnames[c.name] = true
+    if type(c.parameter) ~= "string" or not c.parameter:match(NAME) then fail(path, where .. ".parameter must name a parameter of the experiments") end
+    if used[c.parameter] then fail(path, where .. ": parameter '" .. c.parameter .. "' is already a free parameter or another candidate") end
+    used[c.parameter] = true
+    local x = {name = c.name, parameter = c.parameter}
+    strength(path, where, c, x)
+    if x.low ~= 0 then fail(path, string.format("%s.low = %g: a candidate's strength starts at 0 (0 = today's model, effect off)", where, x.low)) end
+    x.probe = c.probe and number(path, where .. ".probe", c.probe, 1e-300, x.high) or x.high / 2
+    input.candidates[i] = x
+  end
+
+  -- Optional workflow settings (defaults in docs/discovery.md).
+  local s = t.settings or {}
+  if type(s) ~= "table" then fail(path, "'settings' must be an object") end
+  local S = {}
+  S.iterations = number(path, "settings.iterations", s.iterations or 3, 0, 20)
+  S.replicates = number(path, "settings.replicates", s.replicates or 5, 5, 50)
+  S.signature_seeds = number(path, "settings.signature_seeds", s.signature_seeds or 2, 1, 10)
+  S.confirm_seeds = number(path, "settings.confirm_seeds", s.confirm_seeds or 3, 1, 50)
+  S.fd_step = number(path, "settings.fd_step", s.fd_step or 0.1, 1e-4, 0.5)
+  S.alpha = number(path, "settings.alpha", s.alpha or 0.05, 1e-6, 0.5)
+  S.confusable = number(path, "settings.confusable", s.confusable or 0.9, 0.5, 1)
+  input.settings = S
+  return input
+end
+
+return M

@@ -1,0 +1,123 @@
+-- Scoring of blind discovery trials (experiments/validation/discovery_blind.lua): the outcome of
+-- one trial against its sealed truth, the confusion matrix, and exact one-sided binomial
+-- (Clopper-Pearson) bounds.
+--
+-- Clopper & Pearson 1934: with k successes in n trials, the one-sided 1 - alpha lower bound of the
+-- success probability is the p_L with P(X >= k | n, p_L) = alpha (p_L = 0 for k = 0), the upper
+-- bound the p_U with P(X <= k | n, p_U) = alpha (p_U = 1 for k = n). The binomial tail is the finite
+-- sum of C(n, j) p^j (1-p)^(n-j); it is monotone in p, so bisection to 1e-12 finds the bound.
+-- Known answers (tested): 0 of 20 → upper 13.9 %, 30 of 30 → lower 90.5 %, 49 of 50 → lower 91.0 %.
+local M = {}
+
+-- P(X <= k) for X ~ Binomial(n, p).
+function M.binomial_cdf(k, n, p)
+  if k < 0 then return 0 end
+  if k >= n then return 1 end
+  local s, term = 0, (1 - p) ^ n       -- j = 0
+  if p >= 1 then return 0 end
+  for j = 0, k do
+    s = s + term
+    term = term * (n - j) / (j + 1) * p / (1 - p)
+  end
+  return math.min(1, s)
+end
+
+local function bisect(f, target)      -- f increasing in p on [0, 1]
+  local lo, hi = 0, 1
+  for _ = 1, 60 do
+    local mid = (lo + hi) / 2
+    if f(mid) < target then lo = mid else hi = mid end
+  end
+  return (lo + hi) / 2
+end
+
+function M.clopper_pearson_lower(k, n, alpha)
+  alpha = alpha or 0.05
+  if k <= 0 then return 0 end
+  return bisect(function(p) return 1 - M.binomial_cdf(k - 1, n, p) end, alpha)
+end
+
+function M.clopper_pearson_upper(k, n, alpha)
+  alpha = alpha or 0.05
+  if k >= n then return 1 end
+  return bisect(function(p) return 1 - M.binomial_cdf(k, n, p) end, 1 - alpha)
+end
+
+-- The answer the workflow gave, as one label: a candidate's name, or none/ambiguous/unknown.
+function M.answer(result)
+  if result.decision == "effect" then return result.named_effect or "effect?" end
+  return result.decision
+end
+
+-- Whether an answer is right for a truth {kind = "none"|"candidate"|"outside", name =}:
+-- none → "none"; a candidate → its name; an effect outside the list → "unknown" or "none"
+-- (never a wrong name). Returns right, wrong_name.
+function M.judge(truth, answer, candidate_names)
+  local is_name = candidate_names[answer] == true
+  if truth.kind == "none" then return answer == "none", is_name end
+  if truth.kind == "candidate" then return answer == truth.name, is_name and answer ~= truth.name end
+  return answer == "unknown" or answer == "none", is_name
+end
+
+-- Summary of scored trials {{truth =, answer =, right =, wrong_name =, strength =, misfit_before =,
+-- misfit_after =}, ...}: confusion matrix (rows: truth label, columns: answer), rates with bounds.
+function M.summarise(trials, candidate_names_list)
+  local columns = {"none"}
+  for _, n in ipairs(candidate_names_list) do columns[#columns + 1] = n end
+  columns[#columns + 1] = "ambiguous"
+  columns[#columns + 1] = "unknown"
+  local rows_order = {"none"}
+  for _, n in ipairs(candidate_names_list) do rows_order[#rows_order + 1] = n end
+  rows_order[#rows_order + 1] = "outside"
+  local matrix = {}
+  for _, r in ipairs(rows_order) do
+    matrix[r] = {}
+    for _, c in ipairs(columns) do matrix[r][c] = 0 end
+  end
+  local eff_n, eff_right, null_n, null_alarm, out_n, out_wrong = 0, 0, 0, 0, 0, 0
+  local strength_err, ratio = {}, {}
+  for _, t in ipairs(trials) do
+    local row = t.truth.kind == "candidate" and t.truth.name or (t.truth.kind == "none" and "none" or "outside")
+    local col = matrix[row][t.answer] and t.answer or "unknown"
+    matrix[row][col] = matrix[row][col] + 1
+    if t.truth.kind == "candidate" then
+      eff_n = eff_n + 1
+      if t.right then
+        eff_right = eff_right + 1
+        if t.strength and t.truth.strength > 0 then
+          strength_err[#strength_err + 1] = (t.strength - t.truth.strength) / t.truth.strength
+        end
+      end
+    elseif t.truth.kind == "none" then
+      null_n = null_n + 1
+      if t.answer ~= "none" then null_alarm = null_alarm + 1 end
+    else
+      out_n = out_n + 1
+      if t.wrong_name then out_wrong = out_wrong + 1 end
+    end
+    if t.misfit_before and t.misfit_before > 0 and t.misfit_after then ratio[#ratio + 1] = t.misfit_after / t.misfit_before end
+  end
+  local function stats(v)
+    if #v == 0 then return nil end
+    local s, a = 0, 0
+    for _, x in ipairs(v) do s, a = s + x, a + math.abs(x) end
+    local sorted = {}
+    for i, x in ipairs(v) do sorted[i] = x end
+    table.sort(sorted)
+    return {n = #v, mean = s / #v, mean_abs = a / #v, median = sorted[(#v + 1) // 2]}
+  end
+  return {
+    columns = columns, rows = rows_order, confusion = matrix, trials = #trials,
+    effect_trials = eff_n, correct_names = eff_right,
+    correct_name_rate = eff_n > 0 and eff_right / eff_n or nil,
+    correct_name_lower95 = eff_n > 0 and M.clopper_pearson_lower(eff_right, eff_n) or nil,
+    null_trials = null_n, false_alarms = null_alarm,
+    false_alarm_rate = null_n > 0 and null_alarm / null_n or nil,
+    false_alarm_upper95 = null_n > 0 and M.clopper_pearson_upper(null_alarm, null_n) or nil,
+    outside_trials = out_n, outside_wrong_names = out_wrong,
+    strength_relative_error = stats(strength_err),
+    misfit_after_over_before = stats(ratio),
+  }
+end
+
+return M

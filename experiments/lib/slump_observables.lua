@@ -1,0 +1,97 @@
+-- Observables of the slump test on grids that do not depend on the run, so that runs can be
+-- stacked into one vector (experiments/discover.lua, docs/discovery.md): the pile profile h(r)
+-- at fixed radii, the slump history s(t) at fixed times after the lift starts, the vertical
+-- force of the mud on the cone during the lift, and the mud carried up by the cone.
+--
+--   local obs = require("lib.slump_observables")
+--   local p = obs.profile(sim)                         --> {radii_mm = {...}, h_mm = {...}}
+--   local s = obs.history_at(history, obs.HISTORY_TIMES) --> slump [mm] at each time
+--   local f = obs.cone_force(sim:wall_load_history(cone), t_lift, t_stop) --> {mean =, peak =, samples =}
+--   local m = obs.carried_by_cone(sim, {...})          --> {mass_g =, count =}
+local M = {}
+
+-- Profile: bins of PROFILE_BIN from the axis to PROFILE_R_MAX (12 bins, centres 12.5 ... 287.5 mm);
+-- the height of a bin is the median over its angular cells of the highest sphere top (0 where no
+-- sphere is: the plate), sim:measure_profile (docs/experiments.md).
+M.PROFILE_BIN = 0.025
+M.PROFILE_R_MAX = 0.3
+-- Slump history: seconds after the start of the lift. After the run stopped (pile at rest) the
+-- last sample holds.
+M.HISTORY_TIMES = {0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0}
+
+function M.profile(sim)
+  local bins = sim:measure_profile{axis = {0, 0}, base_z = 0, bin_width = M.PROFILE_BIN, r_max = M.PROFILE_R_MAX,
+                                   largest_cluster = true}
+  local radii, h = {}, {}
+  for k, b in ipairs(bins) do
+    radii[k], h[k] = b.r * 1000, b.h * 1000
+  end
+  return {radii_mm = radii, h_mm = h}
+end
+
+-- Linear interpolation of history[k].slump_mm (history[k].t ascending) at each of `times`;
+-- before the first sample the first value, after the last the last.
+function M.history_at(history, times)
+  assert(#history > 0, "slump_observables.history_at: empty history")
+  local out, k = {}, 1
+  for i, t in ipairs(times) do
+    while k < #history and history[k + 1].t <= t do k = k + 1 end
+    local a, b = history[k], history[k + 1]
+    if t <= history[1].t then
+      out[i] = history[1].slump_mm
+    elseif not b then
+      out[i] = a.slump_mm
+    else
+      local w = (t - a.t) / (b.t - a.t)
+      out[i] = a.slump_mm + w * (b.slump_mm - a.slump_mm)
+    end
+  end
+  return out
+end
+
+-- Vertical force of the mud on the cone, positive downward (the mud holds the cone back), over
+-- the load samples with t0 <= t <= t1 (absolute times): mean and peak. `samples` as
+-- sim:wall_load_history returns them ({t =, force = {fx, fy, fz}}, the force the particles exert).
+function M.cone_force(samples, t0, t1)
+  local sum, n, peak = 0, 0, -math.huge
+  for _, s in ipairs(samples) do
+    if s.t >= t0 - 1e-12 and s.t <= t1 + 1e-12 then
+      local down = -s.force[3]
+      sum, n, peak = sum + down, n + 1, math.max(peak, down)
+    end
+  end
+  if n == 0 then return {mean = 0, peak = 0, samples = 0} end
+  return {mean = sum / n, peak = peak, samples = n}
+end
+
+-- Mud carried by the cone: spheres whose centre lies above the cone's bottom edge (z_bottom) and
+-- inside its inner surface plus one radius, moving upward at more than half the lift speed
+-- (they go with the cone, stuck to its inside). o = {lift_speed =, z_bottom =, radius_bottom =,
+-- radius_top =, height =, density =}. Mass in grams (the mass of the simulated spheres: coarse
+-- graining keeps the density).
+function M.carried_by_cone(sim, o)
+  local xs, ys, zs = sim:xyz()
+  local radii = sim:radii()
+  local v = sim:velocities()
+  local count, mass = 0, 0
+  for i = 1, #xs do
+    local r, z = radii[i], zs[i]
+    local h = z - o.z_bottom
+    if h >= 0 and h <= o.height then
+      local R = o.radius_bottom + (o.radius_top - o.radius_bottom) * h / o.height
+      if xs[i] ^ 2 + ys[i] ^ 2 <= (R + r) ^ 2 and v[i][3] > 0.5 * o.lift_speed then
+        count = count + 1
+        mass = mass + 4 / 3 * math.pi * r ^ 3 * o.density
+      end
+    end
+  end
+  return {mass_g = mass * 1000, count = count}
+end
+
+-- Whether sphere i moves with the rising cone (see carried_by_cone): used to leave such spheres
+-- out of "the highest particle under the cone" that decides when the lift stops.
+function M.moving_with_cone(vz, lift_speed)
+  return vz > 0.5 * lift_speed
+end
+
+return M

@@ -1,0 +1,212 @@
+-- Blind benchmark of the discovery workflow (experiments/discover.lua; docs/discovery.md, "Blind
+-- benchmark"). Each trial draws, from its seed, a hidden truth: nothing missing, one candidate
+-- effect at a random strength, or an effect that is not in the candidate list. The "measurements"
+-- are Paddy runs of that truth at another particle diameter and with other seeds than the
+-- workflow uses, plus Gaussian measurement noise. The trial writes the workflow's input file,
+-- seals the truth in truth/<trial>.json (which the workflow never reads), runs the workflow and
+-- scores its answer. Summary: confusion matrix, correct-name rate with its Clopper-Pearson bound,
+-- false alarms on null trials, strength error, misfit after/before → blind_summary.json.
+--
+--   paddy run experiments/validation/discovery_blind.lua --out results/blind               # full (long)
+--   paddy run experiments/validation/discovery_blind.lua --set tiny=true --out results/tiny # CI, minutes
+--
+-- Resumable: every truth simulation and every workflow run is a campaign job (docs/campaign.md);
+-- running the same command again repeats nothing that finished.
+local util = require("lib.util")
+local stack = require("lib.discovery.stack")
+local score = require("lib.discovery.score")
+
+local P = paddy.parameters{
+  {name = "tiny", default = false, description = "CI variant: 2 trials (a strong hidden candidate, a null), one slump experiment, very coarse spheres"},
+  {name = "effect_trials", default = 30, type = "integer", min = 0, max = 1000, description = "trials with a hidden candidate effect"},
+  {name = "null_trials", default = 20, type = "integer", min = 0, max = 1000, description = "trials with nothing missing"},
+  {name = "outside_trials", default = 10, type = "integer", min = 0, max = 1000, description = "trials with an effect outside the candidate list"},
+  {name = "particle_diameter", default = 0.016, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of the workflow's simulations"},
+  {name = "truth_diameter", default = 0.014, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of the truth (the measurements)"},
+  {name = "candidate_set", default = "stand_in", choices = {"stand_in", "effects"},
+   description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
+  {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
+  {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
+  {name = "code_version", default = "", description = "fixed code version for the job keys ('' = hash of the binaries)"},
+}
+
+local here = (debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$")) or "."
+local experiments_dir = here .. "/.."
+local workflow = P.workflow ~= "" and P.workflow or experiments_dir .. "/discover.lua"
+local function say(fmt, ...) io.stderr:write("blind: ", string.format(fmt, ...), "\n") end
+
+-- The candidate lists. Each strength runs from 0 (off) to high; `outside` are effects the
+-- workflow is not told about: a parameter moved from its default by a factor.
+local SETS = {
+  stand_in = {
+    candidates = {{name = "wall_friction", parameter = "mud_steel_friction", low = 0, high = 1.0},
+                  {name = "rolling_resistance", parameter = "mud_mud_rolling_friction", low = 0, high = 0.3}},
+    outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
+  },
+  effects = {
+    candidates = {{name = "liquid_bridges", parameter = "liquid_bridge_volume", low = 0, high = 0.05},
+                  {name = "lubrication", parameter = "lubrication_viscosity", low = 0, high = 1.0},
+                  {name = "wall_adhesion", parameter = "mud_steel_surface_energy", low = 0, high = 0.3},
+                  {name = "plastic_adhesion", parameter = "plastic_adhesion", low = 0, high = 1.0}},
+    outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
+  },
+}
+local set = SETS[P.candidate_set]
+local free = {{parameter = "jkr_surface_energy", low = 0.05, high = 0.3}}
+
+-- Experiments and observables with their measurement sd (abs in the key's unit, rel of the value:
+-- sd = max(abs, rel |value|)).
+local OBS = {{key = "slump_mm", abs = 3}, {key = "slump_flow_mm", abs = 6}, {key = "profile_mm", abs = 4},
+             {key = "history_mm", abs = 4}, {key = "cone_force_N.mean", abs = 0.3, rel = 0.1}}
+local common = {settle_max_time = 1.5, min_rest_time = 0.2, max_time = 4}
+local experiments = {{name = "slump_slow", script = "slump.lua", set = {lift_speed = 0.1}},
+                     {name = "slump_fast", script = "slump.lua", set = {lift_speed = 0.4}}}
+local n_effect, n_null, n_outside = P.effect_trials, P.null_trials, P.outside_trials
+local d_work, d_truth = P.particle_diameter, P.truth_diameter
+local settings = {iterations = 2, replicates = 5, signature_seeds = 2, confirm_seeds = 2}
+if P.tiny then
+  n_effect, n_null, n_outside = 1, 1, 0
+  if d_work == 0.016 then d_work = 0.025 end
+  if d_truth == 0.014 then d_truth = 0.023 end
+  experiments = {{name = "slump", script = "slump.lua", set = {lift_speed = 0.3}}}
+  settings = {iterations = 1, replicates = 5, signature_seeds = 1, confirm_seeds = 2}
+end
+for _, e in ipairs(experiments) do for k, v in pairs(common) do e.set[k] = v end end
+
+-- Trials in a fixed order by kind, their truths drawn from their seeds.
+local trials = {}
+local function add_trial(kind)
+  local no = P.first_trial + #trials
+  trials[#trials + 1] = {no = no, kind = kind, seed = 7919 * no + 17}
+end
+if P.tiny then add_trial("strong") end
+for _ = 1, (P.tiny and 0 or n_effect) do add_trial("candidate") end
+for _ = 1, n_null do add_trial("none") end
+for _ = 1, n_outside do add_trial("outside") end
+
+local function draw_truth(t)
+  math.randomseed(t.seed)
+  local truth = {trial = t.no, seed = t.seed, params = {}, kind = t.kind == "strong" and "candidate" or t.kind}
+  for _, f in ipairs(free) do
+    local v = f.low + (0.2 + 0.6 * math.random()) * (f.high - f.low)
+    truth.params[f.parameter] = v
+  end
+  for _, c in ipairs(set.candidates) do truth.params[c.parameter] = 0 end
+  if truth.kind == "candidate" then
+    local c = set.candidates[math.random(#set.candidates)]
+    -- strengths from barely to clearly detectable: 15 % ... 100 % of the range (strong: the top)
+    local s = t.kind == "strong" and c.high or c.high * (0.15 + 0.85 * math.random())
+    truth.name, truth.strength, truth.params[c.parameter] = c.name, s, s
+  elseif truth.kind == "outside" then
+    local o = set.outside[math.random(#set.outside)]
+    local f = o.factor[1] + (o.factor[2] - o.factor[1]) * math.random()
+    truth.name, truth.strength, truth.params[o.parameter] = o.parameter, o.default * f, o.default * f
+  end
+  return truth
+end
+
+local campaign_dir = util.out("campaign")
+local sims = paddy.campaign{dir = campaign_dir, executor = "local", code_version = P.code_version ~= "" and P.code_version or nil}
+local flows = paddy.campaign{dir = util.out("trials"), executor = "local", max_parallel = 1,
+                             code_version = P.code_version ~= "" and P.code_version or nil}
+util.mkdir(util.out("truth"))
+util.mkdir(util.out("inputs"))
+
+-- FNV-1a, 32 bits (Fowler, Noll, Vo): a short digest of a text.
+local function fnv1a(text)
+  local h = 2166136261
+  for i = 1, #text do h = ((h ~ text:byte(i)) * 16777619) & 0xffffffff end
+  return h
+end
+
+-- 1. The measurements: every trial's truth at truth_diameter, seeds far from the workflow's.
+local keys, truths = {}, {}
+for i, t in ipairs(trials) do
+  truths[i] = draw_truth(t)
+  for _, e in ipairs(experiments) do
+    local params = {particle_diameter = d_truth, pictures = false, snapshot_interval = 0, progress = false}
+    for k, v in pairs(e.set) do params[k] = v end
+    for k, v in pairs(truths[i].params) do params[k] = v end
+    keys[#keys + 1] = sims:submit{script = experiments_dir .. "/" .. e.script, params = params, seed = 500000 + t.seed}
+  end
+end
+say("%d trials (%d effect, %d null, %d outside), workflow at %.0f mm, truth at %.0f mm: %d truth simulations",
+    #trials, P.tiny and 1 or n_effect, n_null, n_outside, d_work * 1000, d_truth * 1000, #keys)
+local entries = sims:run(keys)
+
+-- 2. Input files with noisy measurements; truths sealed apart.
+local k = 0
+local flow_keys = {}
+for i, t in ipairs(trials) do
+  math.randomseed(t.seed + 1)
+  local function gauss() return math.sqrt(-2 * math.log(1 - math.random())) * math.cos(2 * math.pi * math.random()) end
+  local exps = {}
+  for j, e in ipairs(experiments) do
+    k = k + 1
+    local entry = entries[k]
+    if entry.status ~= "done" then error(string.format("blind: truth simulation of trial %d (%s) failed: %s", t.no, e.name, tostring(entry.error)), 0) end
+    local measured, sigma = {}, {}
+    for _, o in ipairs(OBS) do
+      local v = assert(stack.extract(entry.result, o.key))
+      local mv, sv = {}, {}
+      for n, x in ipairs(v) do
+        sv[n] = math.max(o.abs, (o.rel or 0) * math.abs(x))
+        mv[n] = x + sv[n] * gauss()
+      end
+      if #v == 1 then mv, sv = mv[1], sv[1] end
+      measured[o.key], sigma[o.key] = mv, sv
+    end
+    exps[j] = {name = e.name, script = e.script, set = e.set, measured = measured, sigma = sigma}
+  end
+  local input = {description = string.format("blind trial %d", t.no), experiments = exps, free_parameters = free,
+                 candidates = set.candidates, settings = settings}
+  -- The file name carries a digest of the content: the workflow's job key holds the input's path,
+  -- so a changed input (other noise, observables, settings) is a new job, never a stale result.
+  local tmp = paddy.write_json(string.format("inputs/trial_%04d.tmp.json", t.no), input)
+  local f = assert(io.open(tmp, "rb"))
+  local text = f:read("a")
+  f:close()
+  os.remove(tmp)
+  local path = paddy.write_json(string.format("inputs/trial_%04d_%08x.json", t.no, fnv1a(text)), input)
+  paddy.write_json(string.format("truth/trial_%04d.json", t.no), truths[i])
+  flow_keys[i] = flows:submit{script = workflow,
+                              params = {input = path, particle_diameter = d_work, campaign_dir = campaign_dir, max_parallel = 2,
+                                        pictures = false, code_version = P.code_version},
+                              seed = 1000 + t.no}
+end
+
+-- 3. The workflow on every trial (one at a time; each runs its simulations two at a time).
+say("running the workflow on %d trials", #trials)
+local results = flows:run(flow_keys)
+local names, name_list = {}, {}
+for _, c in ipairs(set.candidates) do names[c.name] = true; name_list[#name_list + 1] = c.name end
+local scored = {}
+for i, t in ipairs(trials) do
+  local r = results[i]
+  local row = {trial = t.no, truth = truths[i], status = r.status}
+  if r.status == "done" then
+    row.answer = score.answer(r.result)
+    row.right, row.wrong_name = score.judge(truths[i], row.answer, names)
+    row.strength = r.result.strength and r.result.strength.value or nil
+    row.strength_interval = r.result.strength
+    row.misfit_before, row.misfit_after = r.result.misfit_before, r.result.misfit_after
+    row.simulations, row.wall_time_s = r.result.simulations, r.result.wall_time_s
+    row.q0_p = r.result.q0_p
+    say("trial %d: truth %s%s -> %s (%s)", t.no, truths[i].kind, truths[i].name and (" " .. truths[i].name) or "",
+        row.answer, row.right and "right" or "wrong")
+    scored[#scored + 1] = row
+  else
+    say("trial %d: the workflow failed: %s", t.no, tostring(r.error))
+  end
+end
+local summary = score.summarise(scored, name_list)
+summary.particle_diameter, summary.truth_diameter, summary.candidate_set = d_work, d_truth, P.candidate_set
+summary.failed = #trials - #scored
+local wall, sims_n = 0, 0
+for _, row in ipairs(scored) do wall, sims_n = wall + (row.wall_time_s or 0), sims_n + (row.simulations or 0) end
+summary.mean_wall_time_s = #scored > 0 and wall / #scored or nil
+summary.mean_simulations = #scored > 0 and sims_n / #scored or nil
+summary.truth_simulations_per_trial = #experiments
+paddy.write_json("blind_summary.json", {summary = summary, trials = scored})
+say("correct names %d/%d, false alarms %d/%d", summary.correct_names, summary.effect_trials, summary.false_alarms, summary.null_trials)
+paddy.result{summary = summary, trials = scored}

@@ -1,0 +1,122 @@
+-- Checks of the discovery workflow's Lua libraries on data with known answers: the exact binomial
+-- (Clopper-Pearson) bounds, the scoring of trials, the stacking of observables, the slump
+-- observables on synthetic histories and load samples, and the input file's errors.
+local score = require("lib.discovery.score")
+local stack = require("lib.discovery.stack")
+local input = require("lib.discovery.input")
+local obs = require("lib.slump_observables")
+local function check(cond, fmt, ...)
+  if not cond then error(string.format(fmt, ...), 2) end
+end
+local function near(a, b, tol) return math.abs(a - b) <= tol end
+
+-- Clopper-Pearson, closed forms at the ends: 0 of n → upper 1 - alpha^(1/n); n of n → lower alpha^(1/n).
+for _, n in ipairs({20, 30, 50}) do
+  local u = score.clopper_pearson_upper(0, n)
+  check(near(u, 1 - 0.05 ^ (1 / n), 1e-9), "upper bound 0/%d = %.12g, expected %.12g", n, u, 1 - 0.05 ^ (1 / n))
+  local l = score.clopper_pearson_lower(n, n)
+  check(near(l, 0.05 ^ (1 / n), 1e-9), "lower bound %d/%d = %.12g, expected %.12g", n, n, l, 0.05 ^ (1 / n))
+end
+-- The figures of shared/design/discovery-method.md: 0/20 → 13.9 %, 30/30 → 90.5 %, 49/50 → 91.0 % (> 90 %),
+-- 48/50 below 90 %, 96/100 above.
+check(string.format("%.3f", score.clopper_pearson_upper(0, 20)) == "0.139", "0/20: %.4f", score.clopper_pearson_upper(0, 20))
+check(score.clopper_pearson_lower(49, 50) > 0.90 and score.clopper_pearson_lower(48, 50) < 0.90, "49/50 vs 48/50: %.4f %.4f",
+      score.clopper_pearson_lower(49, 50), score.clopper_pearson_lower(48, 50))
+check(score.clopper_pearson_lower(96, 100) > 0.90 and score.clopper_pearson_lower(95, 100) < 0.90, "96/100 vs 95/100")
+-- Interior point against the binomial tail it inverts: P(X >= 7 | 10, p_L) = 0.05.
+local pl = score.clopper_pearson_lower(7, 10)
+check(near(1 - score.binomial_cdf(6, 10, pl), 0.05, 1e-9), "tail at the lower bound of 7/10: %.12g", 1 - score.binomial_cdf(6, 10, pl))
+check(near(score.binomial_cdf(2, 4, 0.5), 11 / 16, 1e-15), "Binomial(4, 1/2) cdf at 2 = %.17g", score.binomial_cdf(2, 4, 0.5))
+
+-- Judging answers.
+local names = {a = true, b = true}
+check(score.judge({kind = "none"}, "none", names) == true, "null answered none is right")
+local right, wrong = score.judge({kind = "none"}, "a", names)
+check(not right and wrong, "null answered a is a wrong name")
+right, wrong = score.judge({kind = "candidate", name = "a"}, "b", names)
+check(not right and wrong, "a answered b is wrong")
+check(score.judge({kind = "candidate", name = "a"}, "a", names), "a answered a is right")
+right, wrong = score.judge({kind = "outside", name = "x"}, "unknown", names)
+check(right and not wrong, "outside answered unknown is right")
+right, wrong = score.judge({kind = "outside", name = "x"}, "a", names)
+check(not right and wrong, "outside answered a is a wrong name")
+check(score.answer({decision = "effect", named_effect = "b"}) == "b" and score.answer({decision = "ambiguous"}) == "ambiguous", "answers")
+local s = score.summarise({
+  {truth = {kind = "candidate", name = "a", strength = 2}, answer = "a", right = true, strength = 2.5, misfit_before = 4, misfit_after = 1},
+  {truth = {kind = "candidate", name = "b", strength = 1}, answer = "ambiguous", right = false},
+  {truth = {kind = "none"}, answer = "none", right = true, misfit_before = 1, misfit_after = 1},
+  {truth = {kind = "none"}, answer = "unknown", right = false},
+  {truth = {kind = "outside", name = "x"}, answer = "a", right = false, wrong_name = true},
+}, {"a", "b"})
+check(s.confusion.a.a == 1 and s.confusion.b.ambiguous == 1 and s.confusion.none.none == 1 and s.confusion.none.unknown == 1
+      and s.confusion.outside.a == 1, "confusion matrix")
+check(s.correct_names == 1 and s.effect_trials == 2 and s.false_alarms == 1 and s.null_trials == 2 and s.outside_wrong_names == 1, "counts")
+check(near(s.strength_relative_error.mean, 0.25, 1e-15), "strength error %.17g", s.strength_relative_error.mean)
+check(near(s.misfit_after_over_before.mean, (0.25 + 1) / 2, 1e-15), "misfit ratio")
+
+-- Stacking: dotted keys, vectors, standardisation, length errors.
+local result = {slump_mm = 200, profile_mm = {10, 20, 30}, profile_radii_mm = {12.5, 37.5, 62.5}, cone_force_N = {mean = 1.5}}
+check(stack.extract(result, "cone_force_N.mean")[1] == 1.5, "dotted key")
+check(select(2, stack.extract(result, "nope")) ~= nil, "missing key gives a message")
+local inp = {experiments = {{name = "e", observables = {
+  {key = "cone_force_N.mean", measured = {2}, sigma = {0.5}, vector = false},
+  {key = "profile_mm", measured = {11, 19, 33}, sigma = {1, 2, 3}, vector = true},
+  {key = "slump_mm", measured = {210}, sigma = {5}, vector = false}}}}}
+local L = stack.layout(inp)
+check(#L == 5, "layout entries %d", #L)
+local y = stack.simulated(L, {e = result})
+local expect = {1.5 / 0.5, 10, 10, 10, 40}
+for i = 1, 5 do check(near(y[i], expect[i], 1e-15), "y[%d] = %g, expected %g", i, y[i], expect[i]) end
+stack.label(L, {e = result})
+check(L[3].label:match("r=37.5 mm"), "profile label %s", L[3].label)
+local ok, err = pcall(stack.simulated, L, {e = {slump_mm = 1, profile_mm = {1, 2}, cone_force_N = {mean = 1}}}, "test")
+check(not ok and err:match("profile_mm' has 2 entries, the measurement 3"), "length error: %s", tostring(err))
+check(near(stack.rms_standardised({3, 4}, {{1, 0}, {0, 4}}), math.sqrt((9 + 4) / 2), 1e-15), "RMS standardised")
+
+-- Slump observables: interpolation on the fixed times, the lift's force, carried mud.
+local h = {{t = 0, slump_mm = 0}, {t = 0.5, slump_mm = 100}, {t = 1.0, slump_mm = 150}}
+local at = obs.history_at(h, {0.25, 0.5, 0.75, 3})
+check(at[1] == 50 and at[2] == 100 and at[3] == 125 and at[4] == 150, "history_at %g %g %g %g", at[1], at[2], at[3], at[4])
+local samples = {{t = 1, force = {0, 0, -2}}, {t = 2, force = {0, 0, -4}}, {t = 3, force = {0, 0, 6}}}
+local f = obs.cone_force(samples, 1, 2)
+check(f.mean == 3 and f.peak == 4 and f.samples == 2, "cone force mean %g peak %g n %d", f.mean, f.peak, f.samples)
+check(#obs.HISTORY_TIMES > 3 and math.floor(obs.PROFILE_R_MAX / obs.PROFILE_BIN + 0.5) == 12, "fixed grids")
+-- A fake simulation: one sphere rising with the cone inside it, one at rest inside, one rising outside.
+local fake = {
+  xyz = function() return {0, 0.05, 0.5}, {0, 0, 0}, {0.15, 0.15, 0.15} end,
+  radii = function() return {0.01, 0.01, 0.01} end,
+  velocities = function() return {{0, 0, 0.05}, {0, 0, 0}, {0, 0, 0.05}} end,
+}
+local c = obs.carried_by_cone(fake, {lift_speed = 0.05, z_bottom = 0.1, radius_bottom = 0.1, radius_top = 0.05, height = 0.3, density = 1000})
+check(c.count == 1 and near(c.mass_g, 4 / 3 * math.pi * 1e-6 * 1000 * 1000, 1e-9), "carried %d spheres, %g g", c.count, c.mass_g)
+
+-- Input errors name the file, the key and the allowed values.
+local dir = paddy.out_dir
+local function bad(doc, pattern)
+  local path = paddy.write_json(dir .. "/bad_input.json", doc)
+  local ok2, e = pcall(input.read, path)
+  check(not ok2, "accepted a bad input (expected %s)", pattern)
+  check(e:match("^discovery input '[^']*bad_input%.json': ") and e:match(pattern), "message '%s' lacks '%s'", e, pattern)
+end
+local good = function()
+  return {experiments = {{name = "slow", script = "slump.lua", set = {lift_speed = 0.05}, measured = {slump_mm = 231, profile_mm = {1, 2}},
+                          sigma = {slump_mm = 3, profile_mm = 2}}},
+          free_parameters = {{parameter = "jkr_surface_energy", low = 0, high = 0.2}},
+          candidates = {{name = "wall_adhesion", parameter = "mud_steel_surface_energy", low = 0, high = 0.3}}}
+end
+local g = input.read(paddy.write_json(dir .. "/good_input.json", good()))
+check(#g.experiments[1].observables == 2 and g.experiments[1].observables[1].sigma[2] == 2, "one sigma for a vector is repeated")
+check(g.candidates[1].probe == 0.15 and g.free_parameters[1].start == 0.1 and g.settings.replicates == 5, "defaults")
+local t = good(); t.experiments[1].script = "cone.lua"; bad(t, "script = cone.lua %(allowed: slump.lua, rheometer.lua%)")
+t = good(); t.experiments[1].sigma.slump_mm = nil; bad(t, "experiments%[1%]%.sigma%.slump_mm is missing")
+t = good(); t.experiments[1].sigma.profile_mm = {1, 2, 3}; bad(t, "sigma%.profile_mm has 3 entries, measured%.profile_mm has 2")
+t = good(); t.experiments[1].sigma.slump_mm = 0; bad(t, "sigma%.slump_mm%[1%] = 0 must be > 0")
+t = good(); t.candidates[1].low = 0.1; bad(t, "candidates%[1%]%.low = 0%.1: a candidate's strength starts at 0")
+t = good(); t.candidates[1].high = -1; bad(t, "candidates%[1%]: high = %-1 must be greater than low = 0")
+t = good(); t.candidates[1].parameter = "jkr_surface_energy"; bad(t, "already a free parameter")
+t = good(); t.free_parameters[1].start = 5; bad(t, "free_parameters%[1%]%.start = 5 is outside the allowed range %[0, 0%.2%]")
+t = good(); t.settings = {replicates = 3}; bad(t, "settings%.replicates = 3 is outside the allowed range %[5, 50%]")
+t = good(); t.extra = 1; bad(t, "unknown key 'extra' %(allowed:")
+t = good(); t.candidates = {}; bad(t, "'candidates' must be a non%-empty list")
+
+paddy.result{ok = true}
