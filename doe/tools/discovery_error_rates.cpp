@@ -1,7 +1,7 @@
 // Error rates of the discovery decision rule by Monte Carlo (discovery_trials.hpp), written as the
 // tables of docs/discovery.md, "The statistics":
 //   paddy_discovery_error_rates [--trials N] [--calibration N] [--seed S] --out DIR
-// For each noise kind (Gaussian, t5, skewed, Gaussian with Sigma estimated from 8 replicates) and
+// For each noise kind (Gaussian, t5, skewed, Gaussian with Sigma estimated from 8 or 30 replicates) and
 // each threshold mode (chi^2 / normal tables with Holm; empirical thresholds from N null trials of
 // that noise kind, null_calibration.hpp), runs N trials of every scenario (null; truth A, B, C and
 // outside at standardised sizes 1..8) and writes DIR/discovery_error_rates.csv and .json with the
@@ -62,7 +62,8 @@ int main(int argc, char** argv) {
     const std::vector<NoiseSetting> noises{{"gaussian", NoiseKind::Gaussian, 0},
                                            {"t5", NoiseKind::StudentT5, 0},
                                            {"skewed", NoiseKind::Skewed, 0},
-                                           {"gaussian_sigma_from_8_replicates", NoiseKind::Gaussian, 8}};
+                                           {"gaussian_sigma_from_8_replicates", NoiseKind::Gaussian, 8},
+                                           {"gaussian_sigma_from_30_replicates", NoiseKind::Gaussian, 30}};
     const std::vector<double> sizes{1, 2, 3, 4, 5, 6, 8};
     const std::vector<std::string> truths{"A", "B", "C", "outside"};
     nlohmann::json doc;
