@@ -2,6 +2,7 @@
 
 #include "paddy/doe/box_behnken.hpp"
 #include "paddy/doe/central_composite.hpp"
+#include "paddy/doe/discovery_json.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/factorial.hpp"
 #include "paddy/doe/plackett_burman.hpp"
@@ -256,6 +257,20 @@ int doPath(const PathArgs& a, std::ostream& out) {
   return 0;
 }
 
+struct DiagnoseArgs {
+  std::string input, json;
+};
+
+int doDiagnose(const DiagnoseArgs& a, std::ostream& out) {
+  const Diagnosis d = diagnose(diagnoseInputFromJson(readJson(a.input)));
+  printDiagnosis(out, d);
+  if (!a.json.empty()) {
+    writeFileAtomic(a.json, diagnosisToJson(d).dump(2) + "\n");
+    out << "wrote " << a.json << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -311,6 +326,11 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
   path->add_option("--steps", pa.steps, "number of steps");
   path->add_option("--csv", pa.csv, "write the path as CSV");
 
+  DiagnoseArgs ga;
+  auto* diag = app.add_subcommand("diagnose", "score tests of candidate missing effects (docs/doe.md)");
+  diag->add_option("input", ga.input, "JSON with residual, covariance or sigma, jacobian, candidates")->required();
+  diag->add_option("--json", ga.json, "write the diagnosis as JSON");
+
   std::vector<char*> argv;
   std::vector<std::string> copy = args;
   for (auto& s : copy) argv.push_back(s.data());
@@ -325,6 +345,7 @@ int runCli(const std::vector<std::string>& args, std::ostream& out, std::ostream
     if (*analyze) return doAnalyze(aa, out);
     if (*optimize) return doOptimize(oa, out);
     if (*path) return doPath(pa, out);
+    if (*diag) return doDiagnose(ga, out);
   } catch (const std::exception& e) {
     err << "paddy doe: error: " << e.what() << "\n";
     return 2;

@@ -2,6 +2,7 @@
 
 #include "paddy/doe/box_behnken.hpp"
 #include "paddy/doe/central_composite.hpp"
+#include "paddy/doe/discovery_json.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/factorial.hpp"
 #include "paddy/doe/plackett_burman.hpp"
@@ -359,6 +360,12 @@ int lAnalyze(lua_State* L) { return wrap<analyze>(L, "analyze"); }
 int lOptimize(lua_State* L) { return wrap<optimize>(L, "optimize"); }
 int lSteepest(lua_State* L) { return wrap<steepest>(L, "steepest_ascent"); }
 int lSurrogate(lua_State* L) { return wrap<surrogate>(L, "surrogate_suggest"); }
+// Naming a missing effect (discovery_json.hpp).
+int lNoiseCovariance(lua_State* L) { return wrap<noiseCovarianceJson>(L, "noise_covariance"); }
+int lDiagnose(lua_State* L) { return wrap<diagnoseJson>(L, "diagnose"); }
+int lGaussNewton(lua_State* L) { return wrap<gaussNewtonJson>(L, "gauss_newton"); }
+int lCompareFits(lua_State* L) { return wrap<compareFitsJson>(L, "compare_fits"); }
+int lNullThresholds(lua_State* L) { return wrap<nullThresholdsJson>(L, "null_thresholds"); }
 
 }  // namespace
 }  // namespace paddy::doe
@@ -369,6 +376,11 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"optimize", paddy::doe::lOptimize},
                                  {"steepest_ascent", paddy::doe::lSteepest},
                                  {"surrogate_suggest", paddy::doe::lSurrogate},
+                                 {"noise_covariance", paddy::doe::lNoiseCovariance},
+                                 {"diagnose", paddy::doe::lDiagnose},
+                                 {"gauss_newton", paddy::doe::lGaussNewton},
+                                 {"compare_fits", paddy::doe::lCompareFits},
+                                 {"null_thresholds", paddy::doe::lNullThresholds},
                                  {nullptr, nullptr}};
   luaL_newlib(L, fns);
   return 1;

@@ -10,6 +10,7 @@
 //         [--starts N] [--seed S] [--solutions N] [--json OUT.json] [--plots DIR]
 //   paddy doe path FIT.json --response Y [--descent] [--key A --step S [--real]]
 //         [--real-steps A=0.03 ...] [--origin A=x ...] [--steps N] [--csv OUT.csv]
+//   paddy doe diagnose INPUT.json [--json OUT.json]   (naming a missing effect, discovery.hpp)
 // Return value: 0 on success, 2 on bad input (the message goes to stderr).
 #pragma once
 #include <ostream>

@@ -1,0 +1,130 @@
+// Naming a missing effect: score tests of candidate effects on the whitened residual of a
+// calibration that does not fit, and the decision effect / none / ambiguous / unknown.
+//
+// Inputs in raw units: residual y_measured - y_simulated(theta^) (m), noise covariance Sigma
+// (m x m, covariance.hpp), Jacobian dy/dtheta (m x p), candidates k with signature dy/dlambda_k at
+// lambda_k = 0 and physical range [low, high]. Everything is whitened with Sigma = L L^T and
+// passed to scoreTests (score_test.hpp).
+//
+// Decision (level alpha, defaults below):
+//  1. A candidate is *not identifiable* when recalibration absorbs its signature
+//     (|P g| < absorbed_tolerance |g|) or when even its largest physical strength moves the
+//     projected data by less than min_range_z noise standard deviations (high sqrt(a) < min_range_z);
+//     it is reported as such and never named, and never counts as evidence of absence.
+//  2. One family of hypotheses: the global misfit Q0 (chi^2(m - rank J)) and the score z_k of every
+//     identifiable candidate; Holm's step-down adjustment over these K+1 p-values (S. Holm, "A
+//     simple sequentially rejective multiple test procedure", Scand. J. Statist. 6, 65–70, 1979)
+//     keeps the probability of any alarm on data with nothing missing at most alpha. (Testing Q0
+//     at alpha and the z's by Holm at alpha separately would allow up to 2 alpha.)
+//     With empirical thresholds (null_calibration.hpp) a candidate passes when z_k > z_threshold
+//     and Q0 is significant when Q0 > q0_threshold instead.
+//  3. A passing candidate is *plausible* when its interval lambda^ +- z_{1-alpha/2} se meets
+//     [low, high]. The best plausible candidate k* is the one with the largest log Bayes factor
+//     (score_test.hpp; z^2/2 where no prior scale is known).
+//  4. `ambiguous` if another plausible candidate has c(k*, l) >= confusable or a Bayes factor
+//     within a factor bayes_margin of k*'s; ambiguous_with lists them (k* first) and
+//     separating_block names the block (experiment) that best tells k* from its first rival.
+//     `unknown` if Q0 is significant but no candidate passes, if no passing candidate is
+//     plausible, or if Q_k* is still significant (chi^2(m - rank J - 1) at alpha_after).
+//     `none` if nothing passes and Q0 is not significant. Otherwise `effect`, named k*.
+//
+// Separating block (T-optimal discrimination, A. C. Atkinson and V. V. Fedorov, "The design of
+// experiments for discriminating between two rival models", Biometrika 62, 57–70, 1975): with
+// u = P g_k*, v = P g_l restricted to the rows of block B, the noncentrality with which B alone
+// separates k* at strength lambda^ from the best fit of l is
+//   T_B = lambda^2 |u_B|^2 (1 - c_B^2),  c_B = cos(u_B, v_B);
+// the block with the largest T_B is named. 1 - c_B^2 alone (also reported) would favour blocks
+// where neither candidate has any signal.
+#pragma once
+#include "paddy/doe/score_test.hpp"
+
+#include <Eigen/Dense>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace paddy::doe {
+
+struct Candidate {
+  std::string name;
+  Eigen::VectorXd signature;  ///< raw units, m entries
+  double low = 0.0;
+  double high = std::numeric_limits<double>::infinity();
+  std::optional<double> priorSd;  ///< tau; default high - low when finite
+};
+
+struct DecisionOptions {
+  double alpha = 0.05;            ///< family-wise level of the K+1 tests
+  double alphaAfter = 0.05;       ///< level of the misfit left after the named effect
+  double confusable = 0.9;        ///< |cos| of projected signatures above which two are confusable
+  double bayesMargin = 3.0;       ///< BF(k*) / BF(rival) needed to name k* (Kass–Raftery "positive")
+  double absorbedTolerance = 0.05;  ///< |P g| / |g| below this: absorbed by recalibration
+  double minRangeZ = 1.0;         ///< high sqrt(a) below this: no sensitivity in the physical range
+  std::optional<double> zThreshold, q0Threshold, qAfterThreshold;  ///< empirical thresholds
+};
+
+struct DiagnoseInput {
+  Eigen::VectorXd residual;       ///< y_measured - y_simulated, raw units
+  Eigen::MatrixXd covariance;     ///< m x m
+  Eigen::MatrixXd jacobian;       ///< m x p (p may be 0)
+  std::vector<Candidate> candidates;
+  std::vector<std::string> labels, blocks;  ///< optional, m entries each
+  DecisionOptions options;
+};
+
+struct CandidateReport {
+  std::string name;
+  CandidateScore score;
+  double pHolm = 1;         ///< Holm-adjusted p (1 when not identifiable or in empirical mode)
+  bool identifiable = true;
+  std::string notIdentifiableReason;  ///< "absorbed by recalibration" / "no sensitivity in [low, high]"
+  bool passes = false, plausible = false;
+  double score_rank = 0;    ///< log BF or z^2/2, the ranking score
+};
+
+struct BlockSeparation {
+  std::string block;
+  double separation = 0;    ///< 1 - c_B^2
+  double tCriterion = 0;    ///< lambda^2 |u_B|^2 (1 - c_B^2)
+};
+
+struct ResidualRow {
+  std::string label, block;
+  double raw = 0;            ///< residual in raw units
+  double standardised = 0;   ///< raw / sqrt(Sigma_ii)
+  double standardisedAfter = 0;  ///< after recalibrating theta and adding the best plausible effect (if any), linearised
+  double whitened = 0, projected = 0;
+};
+
+struct Diagnosis {
+  std::string decision;      ///< effect, none, ambiguous, unknown
+  std::string named;         ///< set for `effect`
+  std::string best;          ///< best plausible candidate (any decision), may be empty
+  std::string reason;        ///< one sentence saying why
+  std::vector<std::string> ambiguousWith;
+  std::string separatingBlock;
+  std::vector<BlockSeparation> blockSeparations;
+  double q0 = 0, q0P = 1, q0PHolm = 1;
+  int q0Df = 0, rank = 0;
+  bool q0Significant = false;
+  double misfit = 0, misfitProjected = 0, misfitAfter = 0;  ///< sqrt(.../m)
+  std::vector<CandidateReport> candidates;
+  Eigen::MatrixXd confusability;
+  Eigen::VectorXd whitenedResidual, projectedResidual;
+  std::vector<ResidualRow> residualMap;
+};
+
+/// Throws DoeError naming the field for dimension mismatches, non-finite values, a covariance that
+/// is not positive definite, an empty or duplicate candidate name, or low > high.
+Diagnosis diagnose(const DiagnoseInput& in);
+
+/// Holm step-down adjusted p-values, same order as p.
+std::vector<double> holmAdjust(const std::vector<double>& p);
+
+/// T_B and 1 - c_B^2 per distinct block name (in order of first appearance) for u = P g_k,
+/// v = P g_l (whitened rows), strength = lambda^ of k.
+std::vector<BlockSeparation> blockSeparations(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
+                                              double strength, const std::vector<std::string>& blocks);
+
+}  // namespace paddy::doe

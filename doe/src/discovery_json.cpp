@@ -1,0 +1,314 @@
+#include "paddy/doe/discovery_json.hpp"
+
+#include "paddy/doe/covariance.hpp"
+#include "paddy/doe/error.hpp"
+#include "paddy/doe/gauss_newton.hpp"
+#include "paddy/doe/null_calibration.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+namespace paddy::doe {
+
+namespace {
+
+using nlohmann::json;
+
+double number(const json& j, const std::string& what) {
+  if (!j.is_number()) throw DoeError(what + ": must be a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) throw DoeError(what + ": not finite");
+  return v;
+}
+
+// Bound: a number, or null / absent for "unbounded" (JSON has no infinity).
+double bound(const json& o, const char* key, double fallback, const std::string& where) {
+  if (!o.contains(key) || o[key].is_null()) return fallback;
+  return number(o[key], where + "." + key);
+}
+
+// An empty Lua table arrives as an empty JSON object.
+bool emptyTable(const json& j) { return j.is_object() && j.empty(); }
+
+Eigen::VectorXd vector(const json& j, const std::string& what) {
+  if (emptyTable(j)) return Eigen::VectorXd(0);
+  if (!j.is_array()) throw DoeError(what + ": must be a list of numbers");
+  Eigen::VectorXd v(static_cast<Eigen::Index>(j.size()));
+  for (std::size_t i = 0; i < j.size(); ++i) v(static_cast<Eigen::Index>(i)) = number(j[i], what + "[" + std::to_string(i + 1) + "]");
+  return v;
+}
+
+Eigen::MatrixXd matrix(const json& j, const std::string& what, Eigen::Index cols = -1) {
+  if (emptyTable(j)) return Eigen::MatrixXd(0, std::max<Eigen::Index>(cols, 0));
+  if (!j.is_array()) throw DoeError(what + ": must be a list of rows");
+  if (j.empty()) return Eigen::MatrixXd(0, std::max<Eigen::Index>(cols, 0));
+  const std::size_t c = j[0].is_array() ? j[0].size() : 0;
+  Eigen::MatrixXd M(static_cast<Eigen::Index>(j.size()), static_cast<Eigen::Index>(c));
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string row = what + " row " + std::to_string(i + 1);
+    if (!j[i].is_array()) throw DoeError(row + ": must be a list of numbers");
+    if (j[i].size() != c)
+      throw DoeError(row + ": " + std::to_string(j[i].size()) + " entries, row 1 has " + std::to_string(c));
+    for (std::size_t k = 0; k < c; ++k)
+      M(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(k)) = number(j[i][k], row + "[" + std::to_string(k + 1) + "]");
+  }
+  return M;
+}
+
+std::vector<std::string> names(const json& j, const std::string& what) {
+  if (emptyTable(j)) return {};
+  if (!j.is_array()) throw DoeError(what + ": must be a list of names");
+  std::vector<std::string> v;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    if (!j[i].is_string()) throw DoeError(what + "[" + std::to_string(i + 1) + "]: must be a string");
+    v.push_back(j[i].get<std::string>());
+  }
+  return v;
+}
+
+std::vector<double> list(const json& j, const std::string& what) {
+  const Eigen::VectorXd v = vector(j, what);
+  return {v.data(), v.data() + v.size()};
+}
+
+const json& required(const json& o, const char* key) {
+  if (!o.contains(key) || o[key].is_null()) throw DoeError(std::string(key) + ": required");
+  return o[key];
+}
+
+void requireObject(const json& o) {
+  if (!o.is_object()) throw DoeError("expected an object (table) of named fields");
+}
+
+// Covariance from "covariance" (m x m) or "sigma" (m standard deviations); identity if neither.
+Eigen::MatrixXd covarianceOf(const json& o, Eigen::Index m, bool identityIfMissing) {
+  const bool hasCov = o.contains("covariance") && !o["covariance"].is_null();
+  const bool hasSigma = o.contains("sigma") && !o["sigma"].is_null();
+  if (hasCov && hasSigma) throw DoeError("covariance and sigma: give one of them, not both");
+  if (hasCov) {
+    Eigen::MatrixXd C = matrix(o["covariance"], "covariance");
+    if (C.rows() != m || C.cols() != m)
+      throw DoeError("covariance: " + std::to_string(C.rows()) + " x " + std::to_string(C.cols()) + " but the residual has " +
+                     std::to_string(m) + " entries");
+    return C;
+  }
+  if (hasSigma) {
+    const Eigen::VectorXd s = vector(o["sigma"], "sigma");
+    if (s.size() != m)
+      throw DoeError("sigma: " + std::to_string(s.size()) + " entries but the residual has " + std::to_string(m));
+    for (Eigen::Index i = 0; i < m; ++i)
+      if (!(s(i) > 0)) throw DoeError("sigma[" + std::to_string(i + 1) + "]: must be > 0, got " + std::to_string(s(i)));
+    return s.cwiseAbs2().asDiagonal();
+  }
+  if (identityIfMissing) return Eigen::MatrixXd::Identity(m, m);
+  throw DoeError("covariance or sigma: required");
+}
+
+json toJson(const Eigen::VectorXd& v) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < v.size(); ++i) a.push_back(std::isfinite(v(i)) ? json(v(i)) : json(nullptr));
+  return a;
+}
+
+json toJson(const Eigen::MatrixXd& M) {
+  json a = json::array();
+  for (Eigen::Index i = 0; i < M.rows(); ++i) a.push_back(toJson(Eigen::VectorXd(M.row(i).transpose())));
+  return a;
+}
+
+json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
+
+}  // namespace
+
+json noiseCovarianceJson(const json& o) {
+  requireObject(o);
+  const Eigen::MatrixXd X = matrix(required(o, "replicates"), "replicates");
+  const Eigen::VectorXd sigma = o.contains("sigma") && !o["sigma"].is_null() ? vector(o["sigma"], "sigma") : Eigen::VectorXd();
+  const double nAvg = o.contains("n_avg") ? number(o["n_avg"], "n_avg") : 1.0;
+  const NoiseCovariance c = noiseCovariance(X, sigma, nAvg);
+  return {{"covariance", toJson(c.covariance)}, {"seed_covariance", toJson(c.seedCovariance)},
+          {"shrinkage", c.shrinkage}, {"seed_sd", toJson(c.seedSd)}, {"replicates", X.rows()}, {"n_avg", nAvg}};
+}
+
+DiagnoseInput diagnoseInputFromJson(const json& o) {
+  requireObject(o);
+  DiagnoseInput in;
+  in.residual = vector(required(o, "residual"), "residual");
+  const auto m = in.residual.size();
+  in.covariance = covarianceOf(o, m, false);
+  if (o.contains("jacobian") && !o["jacobian"].is_null()) {
+    in.jacobian = matrix(o["jacobian"], "jacobian");
+    if (in.jacobian.rows() == 0) in.jacobian = Eigen::MatrixXd(m, 0);
+    else if (in.jacobian.rows() != m)
+      throw DoeError("jacobian: " + std::to_string(in.jacobian.rows()) + " rows but the residual has " + std::to_string(m) +
+                     " entries (rows = observables, columns = parameters)");
+  } else {
+    in.jacobian = Eigen::MatrixXd(m, 0);
+  }
+  const json cands = o.contains("candidates") && !emptyTable(o["candidates"]) ? o["candidates"] : json::array();
+  if (!cands.is_array()) throw DoeError("candidates: must be a list of {name, signature, low, high}");
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    const std::string where = "candidates[" + std::to_string(k + 1) + "]";
+    const json& c = cands[k];
+    if (!c.is_object()) throw DoeError(where + ": must be {name =, signature =, low =, high =}");
+    Candidate cand;
+    if (!c.contains("name") || !c["name"].is_string()) throw DoeError(where + ".name: required string");
+    cand.name = c["name"].get<std::string>();
+    if (!c.contains("signature")) throw DoeError(where + " (" + cand.name + ").signature: required");
+    cand.signature = vector(c["signature"], where + " (" + cand.name + ").signature");
+    cand.low = bound(c, "low", 0.0, where);
+    cand.high = bound(c, "high", std::numeric_limits<double>::infinity(), where);
+    if (c.contains("prior_sd") && !c["prior_sd"].is_null()) cand.priorSd = number(c["prior_sd"], where + ".prior_sd");
+    in.candidates.push_back(cand);
+  }
+  if (o.contains("labels") && !o["labels"].is_null()) in.labels = names(o["labels"], "labels");
+  if (o.contains("blocks") && !o["blocks"].is_null()) in.blocks = names(o["blocks"], "blocks");
+  auto& opt = in.options;
+  auto num = [&](const char* key, double& field) {
+    if (o.contains(key) && !o[key].is_null()) field = number(o[key], key);
+  };
+  num("alpha", opt.alpha);
+  opt.alphaAfter = opt.alpha;
+  num("alpha_after", opt.alphaAfter);
+  num("confusable", opt.confusable);
+  num("bayes_margin", opt.bayesMargin);
+  num("absorbed_tolerance", opt.absorbedTolerance);
+  num("min_range_z", opt.minRangeZ);
+  auto opt_num = [&](const char* key, std::optional<double>& field) {
+    if (o.contains(key) && !o[key].is_null()) field = number(o[key], key);
+  };
+  opt_num("z_threshold", opt.zThreshold);
+  opt_num("q0_threshold", opt.q0Threshold);
+  opt_num("q_after_threshold", opt.qAfterThreshold);
+  return in;
+}
+
+json diagnosisToJson(const Diagnosis& d) {
+  json j;
+  j["decision"] = d.decision;
+  j["named"] = d.named.empty() ? json(nullptr) : json(d.named);
+  j["best"] = d.best.empty() ? json(nullptr) : json(d.best);
+  j["reason"] = d.reason;
+  j["ambiguous_with"] = d.ambiguousWith;
+  j["separating_block"] = d.separatingBlock.empty() ? json(nullptr) : json(d.separatingBlock);
+  j["block_separation"] = json::array();
+  for (const auto& b : d.blockSeparations)
+    j["block_separation"].push_back({{"block", b.block}, {"separation", b.separation}, {"t_criterion", b.tCriterion}});
+  j["q0"] = d.q0;
+  j["q0_df"] = d.q0Df;
+  j["q0_p"] = d.q0P;
+  j["q0_p_holm"] = d.q0PHolm;
+  j["q0_significant"] = d.q0Significant;
+  j["rank"] = d.rank;
+  j["misfit"] = d.misfit;
+  j["misfit_projected"] = d.misfitProjected;
+  j["misfit_after"] = d.misfitAfter;
+  j["candidates"] = json::array();
+  for (const auto& c : d.candidates) {
+    const auto& s = c.score;
+    json jc{{"name", c.name}, {"a", s.a}, {"b", s.b}, {"z", s.z}, {"p", s.p}, {"p_holm", c.pHolm},
+            {"strength", s.strength}, {"strength_se", finiteOrNull(s.strengthSe)}, {"q_after", s.qAfter},
+            {"q_after_p", s.qAfterP}, {"absorbed_fraction", s.absorbedFraction}, {"identifiable", c.identifiable},
+            {"passes", c.passes}, {"plausible", c.plausible}};
+    jc["bayes_factor"] = s.logBayesFactor ? finiteOrNull(std::exp(*s.logBayesFactor)) : json(nullptr);
+    jc["log_bayes_factor"] = s.logBayesFactor ? json(*s.logBayesFactor) : json(nullptr);
+    jc["not_identifiable_reason"] = c.identifiable ? json(nullptr) : json(c.notIdentifiableReason);
+    j["candidates"].push_back(jc);
+  }
+  j["confusability"] = toJson(d.confusability);
+  j["whitened_residual"] = toJson(d.whitenedResidual);
+  j["projected_residual"] = toJson(d.projectedResidual);
+  j["residual_map"] = json::array();
+  for (const auto& r : d.residualMap)
+    j["residual_map"].push_back({{"label", r.label}, {"block", r.block}, {"raw", r.raw}, {"standardised", r.standardised},
+                                 {"standardised_after", r.standardisedAfter}, {"whitened", r.whitened},
+                                 {"projected", r.projected}});
+  return j;
+}
+
+json diagnoseJson(const json& o) { return diagnosisToJson(diagnose(diagnoseInputFromJson(o))); }
+
+json gaussNewtonJson(const json& o) {
+  requireObject(o);
+  const Eigen::VectorXd theta = vector(required(o, "theta"), "theta");
+  const Eigen::VectorXd res = vector(required(o, "residual"), "residual");
+  const Eigen::MatrixXd Jraw = matrix(required(o, "jacobian"), "jacobian");
+  const auto m = res.size(), p = theta.size();
+  if (Jraw.rows() != m || Jraw.cols() != p)
+    throw DoeError("jacobian: must be " + std::to_string(m) + " x " + std::to_string(p) + " (residual entries x theta entries), got " +
+                   std::to_string(Jraw.rows()) + " x " + std::to_string(Jraw.cols()));
+  const Whitening W(covarianceOf(o, m, true), "covariance");
+  auto bounds = [&](const char* key, double fallback) {
+    Eigen::VectorXd v = Eigen::VectorXd::Constant(p, fallback);
+    if (!o.contains(key) || o[key].is_null()) return v;
+    const json& a = o[key];
+    if (!a.is_array() || static_cast<Eigen::Index>(a.size()) != p)
+      throw DoeError(std::string(key) + ": must list one bound per theta entry (" + std::to_string(p) + ")");
+    for (Eigen::Index i = 0; i < p; ++i)
+      if (!a[static_cast<std::size_t>(i)].is_null()) v(i) = number(a[static_cast<std::size_t>(i)], std::string(key) + "[" + std::to_string(i + 1) + "]");
+    return v;
+  };
+  const double damping = o.contains("damping") ? number(o["damping"], "damping") : 0.0;
+  const BoundedStep s = boundedGaussNewtonStep(theta, W.apply(res), W.apply(Jraw), bounds("lower", -std::numeric_limits<double>::infinity()),
+                                               bounds("upper", std::numeric_limits<double>::infinity()), damping);
+  json j{{"theta", toJson(s.theta)}, {"step", toJson(s.step)}, {"covariance", toJson(s.covariance)}, {"se", toJson(s.se)},
+         {"rank", s.rank}, {"misfit_predicted", s.misfitPredicted}, {"iterations", s.iterations}};
+  j["at_bound"] = json::array();
+  for (int b : s.atBound) j["at_bound"].push_back(b < 0 ? "lower" : b > 0 ? "upper" : "");
+  return j;
+}
+
+json compareFitsJson(const json& o) {
+  requireObject(o);
+  auto integer = [&](const char* key, int fallback) {
+    if (!o.contains(key) || o[key].is_null()) return fallback;
+    const double v = number(o[key], key);
+    if (v != std::floor(v)) throw DoeError(std::string(key) + ": must be an integer");
+    return static_cast<int>(v);
+  };
+  const int n = integer("n", -1);
+  if (n < 0) throw DoeError("n: required (number of observables)");
+  const int kBefore = integer("k_before", 0);
+  const FitComparison c = compareFits(number(required(o, "q_before"), "q_before"), number(required(o, "q_after"), "q_after"),
+                                      integer("df", 1), n, kBefore, integer("k_after", kBefore + integer("df", 1)));
+  return {{"lr", c.lr}, {"p", c.p}, {"delta_bic", c.deltaBic}, {"bayes_factor", finiteOrNull(c.bayesFactor)}, {"evidence", c.evidence}};
+}
+
+json nullThresholdsJson(const json& o) {
+  requireObject(o);
+  const auto z = list(required(o, "z_max"), "z_max");
+  const auto q = list(required(o, "q0"), "q0");
+  const auto qa = o.contains("q_after") && !o["q_after"].is_null() ? list(o["q_after"], "q_after") : std::vector<double>{};
+  const NullThresholds t = nullThresholds(z, q, o.contains("alpha") ? number(o["alpha"], "alpha") : 0.05, qa);
+  json j{{"z_threshold", t.zThreshold}, {"q0_threshold", t.q0Threshold}, {"trials", t.trials}, {"alarms", t.alarms},
+         {"alarm_rate", t.alarmRate}, {"alarm_rate_upper", t.alarmRateUpper}, {"paired", t.paired}};
+  j["q_after_threshold"] = t.qAfterThreshold ? json(*t.qAfterThreshold) : json(nullptr);
+  return j;
+}
+
+void printDiagnosis(std::ostream& out, const Diagnosis& d) {
+  out << fmt::format("decision: {}{}\n", d.decision, d.named.empty() ? "" : " (" + d.named + ")");
+  out << "reason:   " << d.reason << "\n";
+  if (!d.ambiguousWith.empty()) {
+    out << "confusable:";
+    for (const auto& n : d.ambiguousWith) out << " " << n;
+    out << "\n";
+  }
+  if (!d.separatingBlock.empty()) out << "separating block: " << d.separatingBlock << "\n";
+  out << fmt::format("Q0 = {:.4g} on {} df (p = {:.4g}, Holm {:.4g}); misfit {:.4g}, after recalibration {:.4g}, after {} {:.4g}\n",
+                     d.q0, d.q0Df, d.q0P, d.q0PHolm, d.misfit, d.misfitProjected, d.best.empty() ? "(none)" : d.best, d.misfitAfter);
+  out << fmt::format("{:<24} {:>9} {:>8} {:>9} {:>9} {:>11} {:>10} {:>9}  {}\n", "candidate", "a", "z", "p_holm", "strength",
+                     "strength_se", "Q_after", "BF", "status");
+  for (const auto& c : d.candidates) {
+    const std::string status = !c.identifiable ? "not identifiable: " + c.notIdentifiableReason
+                             : c.plausible ? "passes" : c.passes ? "passes, strength outside range" : "";
+    out << fmt::format("{:<24} {:>9.4g} {:>8.3f} {:>9.4g} {:>9.4g} {:>11.4g} {:>10.4g} {:>9}  {}\n", c.name, c.score.a, c.score.z,
+                       c.pHolm, c.score.strength, c.score.strengthSe, c.score.qAfter,
+                       c.score.logBayesFactor ? fmt::format("{:.3g}", std::exp(*c.score.logBayesFactor)) : "-", status);
+  }
+  out << fmt::format("\n{:<24} {:<12} {:>12} {:>13} {:>13}\n", "observable", "block", "residual", "standardised", "after");
+  for (const auto& r : d.residualMap)
+    out << fmt::format("{:<24} {:<12} {:>12.5g} {:>13.3f} {:>13.3f}\n", r.label, r.block, r.raw, r.standardised, r.standardisedAfter);
+}
+
+}  // namespace paddy::doe

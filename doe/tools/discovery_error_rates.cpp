@@ -1,0 +1,139 @@
+// Error rates of the discovery decision rule by Monte Carlo (discovery_trials.hpp), written as the
+// tables of docs/discovery.md, "The statistics":
+//   paddy_discovery_error_rates [--trials N] [--calibration N] [--seed S] --out DIR
+// For each noise kind (Gaussian, t5, skewed, Gaussian with Sigma estimated from 8 or 30 replicates) and
+// each threshold mode (chi^2 / normal tables with Holm; empirical thresholds from N null trials of
+// that noise kind, null_calibration.hpp), runs N trials of every scenario (null; truth A, B, C and
+// outside at standardised sizes 1..8) and writes DIR/discovery_error_rates.csv and .json with the
+// counts and one-sided 95 % Clopper–Pearson bounds. Deterministic for a given seed.
+#include "paddy/doe/csv.hpp"
+#include "paddy/doe/discovery_trials.hpp"
+#include "paddy/doe/error.hpp"
+#include "paddy/doe/null_calibration.hpp"
+
+#include <fmt/format.h>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+using namespace paddy::doe;
+
+namespace {
+
+struct NoiseSetting {
+  std::string name;
+  NoiseKind kind;
+  int replicates;
+};
+
+int intArg(const std::string& s, const std::string& what) {
+  std::size_t pos = 0;
+  int v = 0;
+  try {
+    v = std::stoi(s, &pos);
+  } catch (...) {
+    pos = 0;
+  }
+  if (pos != s.size() || v < 1) throw DoeError(what + ": '" + s + "' is not a positive integer");
+  return v;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  try {
+    int trials = 2000, calibration = 2000;
+    std::uint64_t seed = 1;
+    std::string out;
+    for (int i = 1; i < argc; ++i) {
+      const std::string a = argv[i];
+      auto next = [&]() -> std::string {
+        if (i + 1 >= argc) throw DoeError(a + ": needs a value");
+        return argv[++i];
+      };
+      if (a == "--trials") trials = intArg(next(), a);
+      else if (a == "--calibration") calibration = intArg(next(), a);
+      else if (a == "--seed") seed = static_cast<std::uint64_t>(intArg(next(), a));
+      else if (a == "--out") out = next();
+      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --seed S --out DIR)");
+    }
+    if (out.empty()) throw DoeError("--out DIR is required");
+    const TrialModel model = syntheticTrialModel();
+    const std::vector<NoiseSetting> noises{{"gaussian", NoiseKind::Gaussian, 0},
+                                           {"t5", NoiseKind::StudentT5, 0},
+                                           {"skewed", NoiseKind::Skewed, 0},
+                                           {"gaussian_sigma_from_8_replicates", NoiseKind::Gaussian, 8},
+                                           {"gaussian_sigma_from_30_replicates", NoiseKind::Gaussian, 30}};
+    const std::vector<double> sizes{1, 2, 3, 4, 5, 6, 8};
+    const std::vector<std::string> truths{"A", "B", "C", "outside"};
+    nlohmann::json doc;
+    doc["trials"] = trials;
+    doc["calibration_trials"] = calibration;
+    doc["seed"] = seed;
+    doc["model"] = {{"observables", model.jacobian.rows()}, {"parameters", model.jacobian.cols()}, {"candidates", {"A", "B", "C", "D"}}};
+    {
+      DiagnoseInput probe;
+      probe.residual = Eigen::VectorXd::Zero(model.jacobian.rows());
+      probe.covariance = Eigen::MatrixXd::Identity(model.jacobian.rows(), model.jacobian.rows());
+      probe.jacobian = model.jacobian;
+      probe.candidates = model.candidates;
+      const Diagnosis d = diagnose(probe);
+      nlohmann::json c = nlohmann::json::array();
+      for (Eigen::Index k = 0; k < d.confusability.rows(); ++k) {
+        nlohmann::json row = nlohmann::json::array();
+        for (Eigen::Index l = 0; l < d.confusability.cols(); ++l) row.push_back(d.confusability(k, l));
+        c.push_back(row);
+      }
+      doc["model"]["confusability"] = c;
+    }
+    doc["rows"] = nlohmann::json::array();
+    std::vector<std::string> header{"noise", "thresholds", "truth", "size", "trials", "expected", "expected_rate",
+                                    "expected_lower95", "expected_upper95", "wrong_name", "wrong_name_rate",
+                                    "wrong_name_upper95", "correct", "ambiguous_with_truth", "ambiguous_other",
+                                    "unknown", "none"};
+    std::vector<std::vector<std::string>> rows;
+    std::uint64_t scenarioSeed = seed * 1000003ULL;
+    for (const auto& n : noises) {
+      NullStatistics ns;
+      runTrials(model, {"none", 0.0, n.kind, n.replicates}, calibration, seed * 7919ULL + 17, {}, &ns);
+      const NullThresholds thr = nullThresholds(ns.zMax, ns.q0, 0.05, ns.qAfter);
+      doc["thresholds"][n.name] = {{"z_threshold", thr.zThreshold}, {"q0_threshold", thr.q0Threshold},
+                                   {"q_after_threshold", *thr.qAfterThreshold}, {"calibration_alarm_rate", thr.alarmRate}};
+      for (const std::string mode : {"chi2_holm", "empirical"}) {
+        DecisionOptions opt;
+        if (mode == "empirical") {
+          opt.zThreshold = thr.zThreshold;
+          opt.q0Threshold = thr.q0Threshold;
+          opt.qAfterThreshold = thr.qAfterThreshold;
+        }
+        std::vector<TrialScenario> scenarios{{"none", 0.0, n.kind, n.replicates}};
+        for (const auto& t : truths)
+          for (double s : sizes) scenarios.push_back({t, s, n.kind, n.replicates});
+        for (const auto& sc : scenarios) {
+          const TrialCounts c = runTrials(model, sc, trials, ++scenarioSeed, opt);
+          const auto ok = clopperPearson(c.expected, c.trials);
+          const auto wrong = clopperPearson(c.wrongName, c.trials);
+          rows.push_back({n.name, mode, sc.truth, fmt::format("{:g}", sc.size), std::to_string(c.trials),
+                          std::to_string(c.expected), fmt::format("{:.4f}", ok.rate), fmt::format("{:.4f}", ok.lower),
+                          fmt::format("{:.4f}", ok.upper), std::to_string(c.wrongName), fmt::format("{:.4f}", wrong.rate),
+                          fmt::format("{:.4f}", wrong.upper), std::to_string(c.correct), std::to_string(c.ambiguousWithTruth),
+                          std::to_string(c.ambiguousOther), std::to_string(c.unknown), std::to_string(c.none)});
+          doc["rows"].push_back({{"noise", n.name}, {"thresholds", mode}, {"truth", sc.truth}, {"size", sc.size},
+                                 {"trials", c.trials}, {"expected", c.expected}, {"expected_rate", ok.rate},
+                                 {"expected_lower95", ok.lower}, {"expected_upper95", ok.upper},
+                                 {"wrong_name", c.wrongName}, {"wrong_name_upper95", wrong.upper}, {"correct", c.correct},
+                                 {"ambiguous_with_truth", c.ambiguousWithTruth}, {"ambiguous_other", c.ambiguousOther},
+                                 {"unknown", c.unknown}, {"none", c.none}});
+        }
+        std::cerr << "done " << n.name << " " << mode << "\n";
+      }
+    }
+    writeFileAtomic(out + "/discovery_error_rates.csv", toCsv(header, rows));
+    writeFileAtomic(out + "/discovery_error_rates.json", doc.dump(1) + "\n");
+    std::cout << "wrote " << out << "/discovery_error_rates.csv and .json (" << rows.size() << " rows)\n";
+    return 0;
+  } catch (const std::exception& e) {
+    std::cerr << "paddy_discovery_error_rates: error: " << e.what() << "\n";
+    return 2;
+  }
+}
