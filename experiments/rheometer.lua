@@ -95,12 +95,11 @@ end
 local dt_fraction, dt_damping_factor = P.timestep_fraction, 1
 if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params) end
 local dt = sim:timestep{fraction = dt_fraction}
-local mass = util.total_mass(sim, P.mud_density)
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("rheometer: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", filled, d * 1000, cg.alpha, dt))
 local t0 = sim:time()
 sim:run{duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_every, progress = P.progress,
-        callback = function(s) return not (s:time() - t0 >= P.min_rest_time and util.rms_speed(s, mass) < P.rest_speed) end}
+        callback = function(s) return not (s:time() - t0 >= P.min_rest_time and util.rms_speed(s) < P.rest_speed) end}
 local settle_time = sim:time() - t0
 local struck = sim:remove_if(function(i, x, y, z, r) return z + r > P.fill_level end)
 if poured then
@@ -131,7 +130,6 @@ local function overlaps_vane(x, y, z, r)
 end
 local removed = sim:remove_if(function(i, x, y, z, r) return overlaps_vane(x, y, z, r) end)
 local particles = sim:count()
-mass = util.total_mass(sim, P.mud_density)
 
 -- Speed schedule (absolute times): steps at t_start + k·step_time.
 local t_start = sim:time() + P.insert_time

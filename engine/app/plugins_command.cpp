@@ -1,4 +1,5 @@
-// `paddy plugins`: the plugin search path, the plugins found and everything they provide.
+// `paddy plugins`: the plugin search path, the plugins found and everything they provide, the
+// libraries skipped (file and reason) and names registered by two libraries.
 #include "commands.hpp"
 
 #include <paddy/geometry.hpp>
@@ -40,6 +41,14 @@ int listPlugins() {
   for (const auto& lp : plugins.loaded()) {
     std::cout << "  " << lp.path << '\n';
     for (const auto& p : lp.provides) std::cout << "    provides " << p << '\n';
+  }
+  if (!plugins.failures().empty()) {
+    std::cout << "\nPlugins skipped (could not be loaded):\n";
+    for (const auto& f : plugins.failures()) std::cout << "  " << f.path << "\n    reason: " << f.reason << '\n';
+  }
+  if (!plugins.warnings().empty()) {
+    std::cout << "\nNames registered twice (the first is kept):\n";
+    for (const auto& w : plugins.warnings()) std::cout << "  " << w << '\n';
   }
   std::cout << "\nContact sub-models:\n";
   for (auto kind : {SubModelKind::Normal, SubModelKind::Damping, SubModelKind::Tangential, SubModelKind::Rolling,

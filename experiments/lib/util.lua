@@ -4,9 +4,9 @@ local M = {}
 
 -- RMS translational speed of the particles, mass-weighted: v = sqrt(2 KE_trans / M). The
 -- rotational part is left out: the rest criterion asks whether the mud still flows, and a
--- sphere spinning in place (held by its neighbours) does not move the pile. `total_mass` is
--- unused (kept for the call sites).
-function M.rms_speed(sim, total_mass)
+-- sphere spinning in place (held by its neighbours) does not move the pile. Every sphere has the
+-- mud's density, so its mass is proportional to r^3 and the weights need no density.
+function M.rms_speed(sim)
   local v = sim:velocities()
   local radii = sim:radii()
   local sum, mass = 0, 0

@@ -1,6 +1,7 @@
 // End-to-end: the campaign runner with the real `paddy` executable (C++ API), and the Lua
-// binding paddy.campaign driven by a script run through `paddy run`. Skipped (with a message)
-// when ${PADDY_BINARY_DIR}/bin/paddy has not been built.
+// binding paddy.campaign driven by a script run through `paddy run`. Fails when
+// ${PADDY_BINARY_DIR}/bin/paddy has not been built (a missing executable is a broken build, not a
+// reason to pass).
 #include <paddy/campaign/campaign.hpp>
 
 #include <catch2/catch.hpp>
@@ -44,10 +45,8 @@ paddy.result{twice = 2 * P.a, label = P.label, seed = paddy.seed, threads = padd
 
 TEST_CASE("campaign: real paddy runs through the C++ API", "[campaign][e2e]") {
   const std::string paddy = paddyBinary();
-  if (paddy.empty()) {
-    WARN("skipped: ${PADDY_BINARY_DIR}/bin/paddy is not built");
-    return;
-  }
+  INFO("PADDY_BINARY_DIR = " << (std::getenv("PADDY_BINARY_DIR") ? std::getenv("PADDY_BINARY_DIR") : "(unset)"));
+  REQUIRE_FALSE(paddy.empty());  // ${PADDY_BINARY_DIR}/bin/paddy must exist
   const fs::path dir = tempDir("e2e");
   std::ofstream(dir / "tiny.lua") << kTinyScript;
   std::ostringstream log;
@@ -86,10 +85,8 @@ TEST_CASE("campaign: real paddy runs through the C++ API", "[campaign][e2e]") {
 
 TEST_CASE("campaign: paddy.campaign from a Lua script", "[campaign][e2e]") {
   const std::string paddy = paddyBinary();
-  if (paddy.empty()) {
-    WARN("skipped: ${PADDY_BINARY_DIR}/bin/paddy is not built");
-    return;
-  }
+  INFO("PADDY_BINARY_DIR = " << (std::getenv("PADDY_BINARY_DIR") ? std::getenv("PADDY_BINARY_DIR") : "(unset)"));
+  REQUIRE_FALSE(paddy.empty());  // ${PADDY_BINARY_DIR}/bin/paddy must exist
   const fs::path dir = tempDir("lua");
   std::ofstream(dir / "tiny.lua") << kTinyScript;
   std::ofstream(dir / "calibrate.lua") << R"lua(

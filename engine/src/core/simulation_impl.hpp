@@ -1,8 +1,9 @@
 // Private state of Simulation: contact laws, the neighbour list with contact history, wall
-// contacts, per-thread force buffers. Split over small files by concern:
-//   simulation.cpp (set-up), integrator.cpp (time loop), neighbour_list.cpp (search + history
-//   carry-over), pair_forces.cpp / wall_forces.cpp (force kernels), spatial_sort.cpp,
-//   checkpoint.cpp.
+// contacts, per-thread force buffers. Split over small files in engine/src/core/ by concern:
+//   simulation.cpp (set-up), integrator.cpp (time loop and spatial re-sorting, sortSpatially),
+//   neighbour_list.cpp (search + history carry-over), forces.cpp (particle–particle and
+//   particle–wall force loops, contact_kernel.hpp their shared helpers), wall_forces.cpp (wall
+//   contacts matched to their history), checkpoint.cpp (HDF5 checkpoint / restart).
 #pragma once
 
 #include "contact/contact_law.hpp"

@@ -1,4 +1,6 @@
-// PluginManager: dlopen()s libpaddy_*.so files and calls their single C entry point.
+// PluginManager: dlopen()s libpaddy_*.so files, checks their ABI version, stages what their entry
+// point registers and keeps it only when registration succeeds (the contract is in
+// plugin_manager.hpp and docs/plugins.md, "Loading").
 #include <paddy/errors.hpp>
 #include <paddy/geometry.hpp>
 #include <paddy/plugin_manager.hpp>
@@ -7,6 +9,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -20,31 +23,23 @@ struct PluginManager::Impl {
   std::map<std::pair<SubModelKind, std::string>, SubModelInfo> sub_models;
   std::map<std::string, GeometryInfo> geometries;
   std::map<std::string, MeshReaderInfo> readers;  // by lower-case extension
+  // which library registered each name ("normal:hertz", "geometry:box", "mesh_reader:.stl")
+  std::map<std::string, std::string> provider;
+  std::string current_library = "(registered directly)";
   std::vector<void*> handles;
 };
 
 namespace {
 
-// Collects what one plugin registers, so the manager can record what each library provides.
-class RecordingRegistry final : public PluginRegistry {
+// Stages what one plugin registers; the manager keeps it only if registration succeeds.
+class StagingRegistry final : public PluginRegistry {
  public:
-  explicit RecordingRegistry(PluginManager& m) : manager_(m) {}
-  void addSubModel(SubModelInfo info) override {
-    provides.push_back(std::string(toString(info.kind)) + ":" + info.name);
-    manager_.addSubModel(std::move(info));
-  }
-  void addGeometry(const GeometryInfo& info) override {
-    provides.push_back("geometry:" + info.name);
-    manager_.addGeometry(info);
-  }
-  void addMeshReader(const MeshReaderInfo& info) override {
-    provides.push_back("mesh_reader:" + info.name);
-    manager_.addMeshReader(info);
-  }
-  std::vector<std::string> provides;
-
- private:
-  PluginManager& manager_;
+  void addSubModel(SubModelInfo info) override { sub_models.push_back(std::move(info)); }
+  void addGeometry(const GeometryInfo& info) override { geometries.push_back(info); }
+  void addMeshReader(const MeshReaderInfo& info) override { readers.push_back(info); }
+  std::vector<SubModelInfo> sub_models;
+  std::vector<GeometryInfo> geometries;
+  std::vector<MeshReaderInfo> readers;
 };
 
 std::string lowerCase(std::string s) {
@@ -52,11 +47,36 @@ std::string lowerCase(std::string s) {
   return s;
 }
 
+std::string normalisedExtension(const std::string& ext) {
+  std::string e = lowerCase(ext);
+  if (e.empty() || e[0] != '.') e = "." + e;
+  return e;
+}
+
 std::string executableDir() {
   std::error_code ec;
   fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   return ec ? std::string() : exe.parent_path().string();
 }
+
+// dlsym, but only a symbol defined in the library itself: dlsym on a handle also searches the
+// library's dependencies, which must not stand in for a symbol the plugin lacks.
+void* ownSymbol(void* handle, const std::string& path, const char* name) {
+  void* sym = dlsym(handle, name);
+  if (!sym) return nullptr;
+  Dl_info info{};
+  if (!dladdr(sym, &info) || !info.dli_fname) return nullptr;
+  std::error_code ec;
+  return fs::equivalent(info.dli_fname, path, ec) ? sym : nullptr;
+}
+
+// Unloads a refused library on every exit path of loadLibrary unless released.
+struct HandleGuard {
+  void* handle;
+  ~HandleGuard() {
+    if (handle) dlclose(handle);
+  }
+};
 
 }  // namespace
 
@@ -95,12 +115,20 @@ void PluginManager::loadDirectories(const std::vector<std::string>& dirs) {
     std::sort(libs.begin(), libs.end());  // deterministic load order
     for (const auto& lib : libs) {
       const std::string canonical = fs::weakly_canonical(lib).string();
-      bool seen = std::any_of(loaded_.begin(), loaded_.end(), [&](const LoadedPlugin& p) { return p.path == canonical; });
-      // A library of the same file name found earlier on the path shadows later ones.
-      bool shadowed = std::any_of(loaded_.begin(), loaded_.end(), [&](const LoadedPlugin& p) {
-        return fs::path(p.path).filename() == lib.filename();
-      });
-      if (!seen && !shadowed) loadLibrary(canonical);
+      const auto sameFile = [&](const std::string& p) { return p == canonical; };
+      const auto sameName = [&](const std::string& p) { return fs::path(p).filename() == lib.filename(); };
+      // A library of the same file name found earlier on the path (loaded or refused) shadows later ones.
+      const bool seen = std::any_of(loaded_.begin(), loaded_.end(), [&](const LoadedPlugin& p) { return sameFile(p.path); }) ||
+                        std::any_of(failures_.begin(), failures_.end(), [&](const PluginLoadFailure& f) { return sameFile(f.path); });
+      const bool shadowed = std::any_of(loaded_.begin(), loaded_.end(), [&](const LoadedPlugin& p) { return sameName(p.path); }) ||
+                            std::any_of(failures_.begin(), failures_.end(), [&](const PluginLoadFailure& f) { return sameName(f.path); });
+      if (seen || shadowed) continue;
+      try {
+        loadLibrary(canonical);
+      } catch (const InputError& e) {
+        failures_.push_back({canonical, e.what()});
+        std::fprintf(stderr, "paddy: warning: skipped plugin: %s\n", e.what());
+      }
     }
   }
 }
@@ -108,26 +136,87 @@ void PluginManager::loadDirectories(const std::vector<std::string>& dirs) {
 void PluginManager::loadLibrary(const std::string& path) {
   void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (!handle) throw InputError("cannot load plugin '" + path + "': " + dlerror());
-  auto fn = reinterpret_cast<paddy_register_plugin_fn>(dlsym(handle, "paddy_register_plugin"));
-  if (!fn) {
-    dlclose(handle);
-    throw InputError("plugin '" + path + "' does not export the entry point paddy_register_plugin");
-  }
-  RecordingRegistry registry(*this);
-  const int abi = fn(&registry);
-  if (abi != PADDY_PLUGIN_ABI_VERSION) {
-    dlclose(handle);
+  HandleGuard guard{handle};
+  // 1. The ABI version, before any other code of the plugin runs.
+  auto abiFn = reinterpret_cast<paddy_plugin_abi_version_fn>(ownSymbol(handle, path, "paddy_plugin_abi_version"));
+  if (!abiFn)
+    throw InputError("plugin '" + path + "' does not export paddy_plugin_abi_version (built for plugin ABI 2 or "
+                     "older? this Paddy has ABI " + std::to_string(PADDY_PLUGIN_ABI_VERSION) + "); rebuild it");
+  const int abi = abiFn();
+  if (abi != PADDY_PLUGIN_ABI_VERSION)
     throw InputError("plugin '" + path + "' was built for plugin ABI " + std::to_string(abi) +
                      ", this Paddy has ABI " + std::to_string(PADDY_PLUGIN_ABI_VERSION) + "; rebuild it");
-  }
-  impl_->handles.push_back(handle);
-  loaded_.push_back({path, registry.provides});
+  auto registerFn = reinterpret_cast<paddy_register_plugin_fn>(ownSymbol(handle, path, "paddy_register_plugin"));
+  if (!registerFn) throw InputError("plugin '" + path + "' does not export the entry point paddy_register_plugin");
+  // 2. Registration into a staging registry; kept only if it completes.
+  std::string failure;
+  int returned = 0;
+  {
+    StagingRegistry staged;
+    try {
+      returned = registerFn(&staged);
+    } catch (const std::exception& e) {
+      failure = std::string("its paddy_register_plugin threw: ") + e.what();
+    } catch (...) {
+      failure = "its paddy_register_plugin threw a non-standard exception";
+    }
+    if (failure.empty() && returned != PADDY_PLUGIN_ABI_VERSION)
+      failure = "its paddy_register_plugin returned " + std::to_string(returned) + ", not the ABI version " +
+                std::to_string(PADDY_PLUGIN_ABI_VERSION);
+    if (failure.empty()) {
+      // 3. Commit. Check every item first so that a bad item leaves nothing behind.
+      for (const auto& info : staged.sub_models)
+        if (info.name.empty() || !info.create) failure = "it registered a sub-model without name or factory";
+      for (const auto& info : staged.geometries)
+        if (info.name.empty() || !info.build) failure = "it registered a geometry without name or builder";
+      for (const auto& info : staged.readers)
+        if (info.name.empty() || !info.read || info.extensions.empty())
+          failure = "it registered a mesh reader without name, extensions or read function";
+    }
+    if (failure.empty()) {
+      LoadedPlugin lp{path, {}};
+      impl_->current_library = path;
+      for (auto& info : staged.sub_models) {
+        lp.provides.push_back(std::string(toString(info.kind)) + ":" + info.name);
+        addSubModel(std::move(info));
+      }
+      for (const auto& info : staged.geometries) {
+        lp.provides.push_back("geometry:" + info.name);
+        addGeometry(info);
+      }
+      for (const auto& info : staged.readers) {
+        lp.provides.push_back("mesh_reader:" + info.name);
+        addMeshReader(info);
+      }
+      impl_->current_library = "(registered directly)";
+      impl_->handles.push_back(handle);
+      guard.handle = nullptr;
+      loaded_.push_back(std::move(lp));
+      return;
+    }
+  }  // staged objects (whose code lives in the library) are destroyed before the library is unloaded
+  throw InputError("plugin '" + path + "' refused: " + failure);
 }
+
+namespace {
+// First-wins registration of one name; false (and a warning naming both libraries) for a repeat.
+bool claimName(std::map<std::string, std::string>& provider, const std::string& key, const std::string& library,
+               std::vector<std::string>& warnings) {
+  const auto [it, inserted] = provider.emplace(key, library);
+  if (inserted) return true;
+  warnings.push_back(key + " is registered by both " + it->second + " and " + library + "; keeping the first (" +
+                     it->second + ")");
+  std::fprintf(stderr, "paddy: warning: %s\n", warnings.back().c_str());
+  return false;
+}
+}  // namespace
 
 void PluginManager::addSubModel(SubModelInfo info) {
   if (info.name.empty() || !info.create) throw InputError("a plugin registered a sub-model without name or factory");
+  if (!claimName(impl_->provider, std::string(toString(info.kind)) + ":" + info.name, impl_->current_library, warnings_))
+    return;
   auto key = std::make_pair(info.kind, info.name);
-  impl_->sub_models[key] = std::move(info);  // later registrations replace earlier ones
+  impl_->sub_models.emplace(key, std::move(info));
 }
 
 const SubModelInfo& PluginManager::subModel(const std::string& name, SubModelKind kind) const {
@@ -157,7 +246,8 @@ std::vector<const SubModelInfo*> PluginManager::subModels(SubModelKind kind) con
 
 void PluginManager::addGeometry(const GeometryInfo& info) {
   if (info.name.empty() || !info.build) throw InputError("a plugin registered a geometry without name or builder");
-  impl_->geometries[info.name] = info;
+  if (!claimName(impl_->provider, "geometry:" + info.name, impl_->current_library, warnings_)) return;
+  impl_->geometries.emplace(info.name, info);
 }
 
 const GeometryInfo& PluginManager::geometry(const std::string& name) const {
@@ -184,15 +274,13 @@ void PluginManager::addMeshReader(const MeshReaderInfo& info) {
   if (info.name.empty() || !info.read || info.extensions.empty())
     throw InputError("a plugin registered a mesh reader without name, extensions or read function");
   for (const auto& ext : info.extensions) {
-    std::string e = lowerCase(ext);
-    if (e.empty() || e[0] != '.') e = "." + e;
-    impl_->readers[e] = info;
+    const std::string e = normalisedExtension(ext);
+    if (claimName(impl_->provider, "mesh_reader:" + e, impl_->current_library, warnings_)) impl_->readers.emplace(e, info);
   }
 }
 
 const MeshReaderInfo& PluginManager::meshReader(const std::string& extension) const {
-  std::string e = lowerCase(extension);
-  if (!e.empty() && e[0] != '.') e = "." + e;
+  const std::string e = extension.empty() ? std::string() : normalisedExtension(extension);
   auto it = impl_->readers.find(e);
   if (it != impl_->readers.end()) return it->second;
   std::ostringstream msg;

@@ -426,6 +426,24 @@ void MeshWall::reduce(const Vec3& xb, double radius, std::uint32_t particle, std
   }
 }
 
+void MeshWall::closestHits(const Vec3& xb, double reach, const std::uint32_t* first, const std::uint32_t* last,
+                           std::vector<Hit>& hits) const {
+  for (const std::uint32_t* it = first; it != last; ++it) {
+    const std::uint32_t t = *it;
+    const auto& tri = mesh_.triangles[t];
+    const auto cp = geometry::closestPointOnTriangle(xb, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
+    const double d = (cp.point - xb).norm();
+    if (d >= reach) continue;
+    Hit h;
+    h.tri = t;
+    h.region = region_[t];
+    h.feature = cp.feature;
+    h.d = d;
+    h.q = cp.point;
+    hits.push_back(h);
+  }
+}
+
 void MeshWall::findContacts(const ParticleView& p, double max_gap, std::vector<WallContact>& out) const {
   const long nc = static_cast<long>(cand_particle_.size());
   const int nthreads = omp_get_max_threads();
@@ -441,20 +459,8 @@ void MeshWall::findContacts(const ParticleView& p, double max_gap, std::vector<W
       const Vec3 xb = state_.pose.toBody(p.position[i]);
       const double r = p.radius[i], reach = r + max_gap;
       hits.clear();
-      for (std::uint32_t k = cand_off_[static_cast<std::size_t>(c)]; k < cand_off_[static_cast<std::size_t>(c) + 1]; ++k) {
-        const std::uint32_t t = cand_tri_[k];
-        const auto& tri = mesh_.triangles[t];
-        const auto cp = geometry::closestPointOnTriangle(xb, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
-        const double d = (cp.point - xb).norm();
-        if (d >= reach) continue;
-        Hit h;
-        h.tri = t;
-        h.region = region_[t];
-        h.feature = cp.feature;
-        h.d = d;
-        h.q = cp.point;
-        hits.push_back(h);
-      }
+      const std::uint32_t* tris = cand_tri_.data();
+      closestHits(xb, reach, tris + cand_off_[static_cast<std::size_t>(c)], tris + cand_off_[static_cast<std::size_t>(c) + 1], hits);
       if (!hits.empty()) reduce(xb, r, i, hits, local[tid]);
     }
   }
@@ -469,19 +475,7 @@ void MeshWall::contactsOfSphere(const Vec3& centre, double radius, double max_ga
   std::vector<std::uint32_t> tris;
   gatherTriangles(xb, radius + max_gap, tris);
   std::vector<Hit> hits;
-  for (std::uint32_t t : tris) {
-    const auto& tri = mesh_.triangles[t];
-    const auto cp = geometry::closestPointOnTriangle(xb, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
-    const double d = (cp.point - xb).norm();
-    if (d >= radius + max_gap) continue;
-    Hit h;
-    h.tri = t;
-    h.region = region_[t];
-    h.feature = cp.feature;
-    h.d = d;
-    h.q = cp.point;
-    hits.push_back(h);
-  }
+  closestHits(xb, radius + max_gap, tris.data(), tris.data() + tris.size(), hits);
   std::vector<WallContact> found;
   reduce(xb, radius, particle, hits, found);
   for (const WallContact& c : found)

@@ -121,6 +121,9 @@ class MeshWall : public Wall {
   void buildTopology();
   void buildGrid(double query_radius);
   void gatherTriangles(const Vec3& xb, double reach, std::vector<std::uint32_t>& tris) const;
+  // Appends a Hit for each triangle in [first, last) whose closest point is nearer than reach.
+  void closestHits(const Vec3& xb, double reach, const std::uint32_t* first, const std::uint32_t* last,
+                   std::vector<Hit>& hits) const;
   void reduce(const Vec3& xb, double radius, std::uint32_t particle, std::vector<Hit>& hits,
               std::vector<WallContact>& out) const;
   bool isLocalMinimum(const Hit& h, const Vec3& xb) const;
