@@ -8,13 +8,18 @@
 --    settle (kinetic-energy criterion), strike off above fill_level.
 -- 2. Insert the vane (part "vane": 4 blades, 50 mm diameter, 60 mm high, blades from vane_bottom):
 --    the particles overlapping a blade or the shaft are removed, the rest settles briefly.
--- 3. Turn the vane through the speed steps speeds_rpm, each step_time long; record the axial
---    torque every sample_interval. The steady torque of a step is the mean over its last
---    average_fraction (the resisting torque: −T·ẑ for a positive speed).
+-- 3. Start-up test (startup_rpm > 0): from rest, turn at startup_rpm through startup_angle; the
+--    peak of the smoothed torque gives the yield stress by the vane relation (Nguyen & Boger 1983;
+--    measure.vane_startup). Then the speed steps speeds_rpm up (and down again, down_sweep), each
+--    at constant speed until its torque is steady by the criterion of measure.steady_torque (batch
+--    means over windows of window_angle, no significant trend, drift below drift_tolerance, at
+--    least min_step_angle turned) or max_step_time has passed; step_time > 0 runs fixed steps
+--    instead. Steady torque = mean of the compared windows; the torque is the resisting torque
+--    −T·ẑ. Steps that did not become steady are reported so and left out of the fit.
 -- 4. Convert torque → shear stress with the vane relation T = (π D³/2)(H/D + 1/3) τ, speed →
 --    shear rate with the Couette analogy γ̇ = 2Ω / (n (1 − κ^{2/n})), κ = D/D_cup, n the local
 --    flow index d ln T / d ln Ω (paddy.measure vane_flow_curve, docs/measurement.md), and fit
---    Herschel–Bulkley τ = τ0 + K γ̇ⁿ.
+--    Herschel–Bulkley τ = τ0 + K γ̇ⁿ to the steady up-sweep steps.
 -- 5. Optional measured_csv (columns speed_rpm,torque_Nm): relative error |T_meas − T_sim| / T_meas
 --    per speed (simulated torque interpolated in ln Ω between the simulated speeds) and the mean.
 local mud = require("lib.mud")
@@ -32,9 +37,19 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "packing", default = "poured", choices = {"poured", "lattice"},
    description = "fill: poured (random loose spheres in the cup and a hopper on its rim, settled under gravity: amorphous; lib/pour.lua) or lattice (FCC lattice: settles into a crystal, not a mud)"},
   {name = "speeds_rpm", default = "5,10,20,40,80", description = "vane speed steps [rpm], increasing"},
-  {name = "step_time", default = 0.5, unit = "s", min = 0.01, max = 100, description = "duration of each speed step"},
-  {name = "average_fraction", default = 0.5, min = 0.05, max = 1, description = "steady torque: mean over this last fraction of a step"},
-  {name = "sample_interval", default = 0.005, unit = "s", min = 1e-5, max = 1, description = "torque sampling interval"},
+  {name = "down_sweep", default = true, description = "after the up-sweep, the same speeds down again (without the top one): hysteresis shows thixotropy"},
+  {name = "step_time", default = 0.0, unit = "s", min = 0, max = 100, description = "0: each step runs until its torque is steady (criterion below) or max_step_time; > 0: every step this long (the criterion still says whether it became steady)"},
+  {name = "max_step_time", default = 8.0, unit = "s", min = 0.01, max = 100, description = "longest step when step_time = 0"},
+  {name = "min_step_angle", default = 60, unit = "deg", min = 0, max = 3600, description = "steady criterion: no step is steady before the vane turned this far in it"},
+  {name = "window_angle", default = 10, unit = "deg", min = 0.1, max = 360, description = "steady criterion: torque means over windows of this rotation angle"},
+  {name = "steady_windows", default = 6, type = "integer", min = 3, max = 100, description = "steady criterion: the last this many windows are compared; the steady torque is their mean"},
+  {name = "trend_alpha", default = 0.05, min = 1e-6, max = 0.5, description = "steady criterion: level of the t test for a trend of the window means"},
+  {name = "drift_tolerance", default = 0.05, min = 1e-4, max = 1, description = "steady criterion: largest fitted change over the compared windows, relative to their mean"},
+  {name = "fit_unsteady", default = false, description = "fit Herschel-Bulkley to the steps that did not become steady too (the fit then says so)"},
+  {name = "startup_rpm", default = 5, unit = "rpm", min = 0, max = 100, description = "start-up (stress-growth) test before the sweep at this speed (0: none)"},
+  {name = "startup_angle", default = 90, unit = "deg", min = 1, max = 3600, description = "rotation of the start-up test"},
+  {name = "sample_interval", default = 0.005, unit = "s", min = 1e-5, max = 1, description = "torque sampling interval (shorter at high speed: at least samples_per_window per window)"},
+  {name = "samples_per_window", default = 10, type = "integer", min = 1, max = 1000, description = "torque samples per window at least"},
   {name = "fill_level", default = 0.12, unit = "m", min = 0.01, max = 1, description = "mud level in the cup"},
   {name = "cup_diameter", default = 0.1, unit = "m", min = 0.01, max = 1, description = "cup inner diameter"},
   {name = "cup_height", default = 0.12, unit = "m", min = 0.01, max = 1, description = "cup inner depth"},
@@ -55,11 +70,12 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
 
 local wall_start = os.time()
 local d = P.particle_diameter
-local speeds = util.numbers(P.speeds_rpm, "speeds_rpm")
+local speeds = P.speeds_rpm:match("^%s*$") and {} or util.numbers(P.speeds_rpm, "speeds_rpm")  -- "": start-up only
 for k = 2, #speeds do
-  if not (speeds[k] > speeds[k - 1]) then error("speeds_rpm must be increasing: " .. P.speeds_rpm) end
+  if not (speeds[k] > speeds[k - 1]) then error("speeds_rpm = " .. P.speeds_rpm .. ": the speeds must increase strictly") end
 end
-if speeds[1] <= 0 then error("speeds_rpm must be positive") end
+if #speeds > 0 and speeds[1] <= 0 then error(string.format("speeds_rpm = %s: every speed must be > 0 rpm", P.speeds_rpm)) end
+if #speeds == 0 and P.startup_rpm == 0 then error("speeds_rpm is empty and startup_rpm = 0: nothing to measure") end
 local seed = P.seed > 0 and P.seed or paddy.seed
 local R_cup, R_vane = P.cup_diameter / 2, P.vane_diameter / 2
 local z_vane = P.vane_bottom
@@ -131,71 +147,156 @@ end
 local removed = sim:remove_if(function(i, x, y, z, r) return overlaps_vane(x, y, z, r) end)
 local particles = sim:count()
 
--- Speed schedule (absolute times): steps at t_start + k·step_time.
-local t_start = sim:time() + P.insert_time
-local schedule = {{t_start, 0}}
-for k, rpm in ipairs(speeds) do
-  local w = measure.rpm_to_rad(rpm)
-  schedule[#schedule + 1] = {t_start + (k - 1) * P.step_time, w}
-  schedule[#schedule + 1] = {t_start + k * P.step_time, w}
-end
 local vane = sim:add_mesh_wall{
   name = "vane", material = m_steel, part = "vane",
   params = {diameter = P.vane_diameter, height = P.vane_height, blade_thickness = blade_t, shaft_diameter = 2 * shaft_r},
   translate = {0, 0, z_vane},
-  motion = {type = "rotate", point = {0, 0, z_vane}, axis = {0, 0, 1}, schedule = schedule},
+  motion = {type = "rotate", point = {0, 0, z_vane}, axis = {0, 0, 1}, speed = 0},
 }
+local vane_geometry = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2}
 
--- 3. Run and sample the torque.
-local samples = {}  -- {t, torque} with t from t_start, torque = resisting torque −T·ẑ
-local total = P.insert_time + #speeds * P.step_time
-sim:run{duration = total, every = P.sample_interval, snapshot_every = snapshot_every, progress = P.progress,
-        callback = function(s)
-          if s:time() >= t_start - 1e-12 then
+-- 3. The vane at rest for insert_time, then the start-up test and the speed steps; each runs at a
+-- constant speed (sim:set_motion) and samples the resisting torque −T·ẑ against the angle turned.
+if P.insert_time > 0 then sim:run{duration = P.insert_time, snapshot_every = snapshot_every, progress = P.progress} end
+local t_start = sim:time()
+local samples = {}  -- {t, torque, phase code} with t from t_start, for torque.dat
+local PHASE_CODE = {startup = 0, up = 1, down = 2}
+local criterion = {window_angle = math.rad(P.window_angle), windows = P.steady_windows, min_angle = math.rad(P.min_step_angle),
+                   alpha = P.trend_alpha, drift_tolerance = P.drift_tolerance}
+
+-- Turns the vane at `rpm` for `duration` (stop(angle, angles, torques) → true ends it early);
+-- returns the angles [rad from the phase start], torques, start and end time.
+local function turn(rpm, duration, every, phase, stop)
+  local w = measure.rpm_to_rad(rpm)
+  sim:set_motion(vane, {type = "rotate", point = {0, 0, z_vane}, axis = {0, 0, 1}, speed = w})
+  local a0, t0 = sim:wall_pose(vane).angle, sim:time()
+  local angles, torques = {}, {}
+  sim:run{duration = duration, every = every, snapshot_every = snapshot_every, progress = P.progress,
+          callback = function(s)
             s:record_wall_loads(vane)
-            samples[#samples + 1] = {t = s:time() - t_start, torque = -s:wall_axial_torque(vane)}
-          end
-          return true
-        end}
-sim:write_wall_loads(vane, "vane_loads.csv")
-
--- Steady torque per step.
-local steps = {}
-local omegas, torques = {}, {}
-for k, rpm in ipairs(speeds) do
-  local a, b = (k - P.average_fraction) * P.step_time, k * P.step_time
-  local values = {}
-  for _, s in ipairs(samples) do
-    if s.t >= a - 1e-9 and s.t <= b + 1e-9 then values[#values + 1] = s.torque end
-  end
-  local mean = util.mean(values)
-  steps[k] = {speed_rpm = rpm, omega = measure.rpm_to_rad(rpm), torque_Nm = mean, torque_std = util.std(values),
-              samples = #values}
-  omegas[k], torques[k] = steps[k].omega, mean
+            local a, T = s:wall_pose(vane).angle - a0, -s:wall_axial_torque(vane)
+            angles[#angles + 1], torques[#torques + 1] = a, T
+            samples[#samples + 1] = {s:time() - t_start, T, PHASE_CODE[phase]}
+            return not (stop and stop(a, angles, torques))
+          end}
+  return angles, torques, t0 - t_start, sim:time() - t_start
 end
 
--- 4. Flow curve and Herschel–Bulkley fit.
-local vane_geometry = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2}
-local ok, curve = pcall(measure.vane_flow_curve, {vane = vane_geometry, omega = omegas, torque = torques})
+-- 3a. Start-up (stress growth) at startup_rpm from rest: peak torque → yield stress (Nguyen & Boger).
+local startup
+if P.startup_rpm > 0 then
+  local w = measure.rpm_to_rad(P.startup_rpm)
+  local angle_max = math.rad(P.startup_angle)
+  local angles, torques = turn(P.startup_rpm, angle_max / w, math.min(P.sample_interval, math.rad(0.25) / w), "startup")
+  local su = measure.vane_startup{vane = vane_geometry, angle = angles, torque = torques}
+  startup = {speed_rpm = P.startup_rpm, angle_deg = math.deg(angles[#angles]), peak_torque_Nm = su.peak_torque,
+             peak_angle_deg = math.deg(su.peak_angle), peak_reached = su.peak_reached, final_torque_Nm = su.final_torque,
+             yield_stress_Pa = su.yield_stress, samples = #angles}
+  local rows = {}
+  for k = 1, #angles do rows[k] = {math.deg(angles[k]), torques[k], su.smoothed[k]} end
+  util.write_columns("startup.dat", "angle_deg torque_Nm smoothed_torque_Nm (start-up at " .. P.startup_rpm .. " rpm)", rows)
+  if not su.peak_reached then
+    io.stderr:write(string.format("warning: rheometer: the start-up torque was still rising at %g deg: the peak %.4g N m "
+                                  .. "is a lower bound (raise startup_angle)\n", P.startup_angle, su.peak_torque))
+  end
+end
+
+-- 3b. Speed steps: each until steady (or max_step_time), or step_time long.
+local window = math.rad(P.window_angle)
+local function speed_step(rpm, phase)
+  local w = measure.rpm_to_rad(rpm)
+  local every = math.min(P.sample_interval, window / w / P.samples_per_window)
+  local seen = 0
+  local stop = nil
+  if P.step_time == 0 then
+    stop = function(a, angles, torques)  -- judge at each completed window
+      local n = math.floor(a / window)
+      if n <= seen then return false end
+      seen = n
+      if n < P.steady_windows or a < criterion.min_angle then return false end
+      local c = {angle = angles, torque = torques}
+      for k, v in pairs(criterion) do c[k] = v end
+      return measure.steady_torque(c).steady
+    end
+  end
+  local angles, torques, t0, t1 = turn(rpm, P.step_time > 0 and P.step_time or P.max_step_time, every, phase, stop)
+  local c = {angle = angles, torque = torques}
+  for k, v in pairs(criterion) do c[k] = v end
+  local v = measure.steady_torque(c)
+  if not v.steady then
+    io.stderr:write(string.format("warning: rheometer: %s %g rpm not steady after %.3g s (%.0f deg): %s\n", phase, rpm,
+                                  t1 - t0, math.deg(v.angle), v.reason))
+  end
+  return {speed_rpm = rpm, omega = w, steady = v.steady, not_steady_because = v.steady and nil or v.reason,
+          torque_Nm = v.mean, torque_se = v.standard_error, trend_Nm_per_rev = v.trend * 2 * math.pi,
+          trend_se_Nm_per_rev = v.trend_standard_error * 2 * math.pi, trend_p = v.trend_p_value, drift = v.drift,
+          windows = v.compared_windows, angle_deg = math.deg(v.angle), duration_s = t1 - t0, t_from = t1 - v.compared_windows * window / w,
+          t_to = t1, samples = #angles, window_means_Nm = v.window_means}
+end
+local steps = {}
+for k, rpm in ipairs(speeds) do steps[k] = speed_step(rpm, "up") end
+local down = {}
+if P.down_sweep then
+  for k = #speeds - 1, 1, -1 do down[#down + 1] = speed_step(speeds[k], "down") end
+end
+sim:write_wall_loads(vane, "vane_loads.csv")
+
+-- 4. Flow curve and Herschel–Bulkley fit of the up-sweep's steady steps (or all: fit_unsteady).
+local omegas, torques, fitted = {}, {}, {}
+for k, s in ipairs(steps) do
+  s.shear_stress_Pa = measure.vane_shear_stress(vane_geometry, s.torque_Nm)
+  if s.steady or P.fit_unsteady then
+    omegas[#omegas + 1], torques[#torques + 1], fitted[#fitted + 1] = s.omega, s.torque_Nm, k
+  end
+end
+local unsteady_in_fit = 0
+for _, k in ipairs(fitted) do if not steps[k].steady then unsteady_in_fit = unsteady_in_fit + 1 end end
+local ok, curve = false, "no speed steps (speeds_rpm is empty)"
+if #speeds > 0 then ok, curve = pcall(measure.vane_flow_curve, {vane = vane_geometry, omega = omegas, torque = torques}) end
 local fit, fit_error, fit_warning, rate_share = nil, nil, nil, nil
 if ok then
   fit = curve.fit
-  for k, s in ipairs(steps) do
-    s.shear_stress_Pa = curve.shear_stress[k]
-    s.shear_rate = curve.shear_rate[k]
-    s.n_local = curve.n_local[k]
-    s.hb_torque_Nm = measure.vane_torque_hb(vane_geometry, fit, s.omega)
+  fit.steps = #fitted
+  fit.unsteady_steps = unsteady_in_fit
+  local fsteps = {}
+  for i, k in ipairs(fitted) do
+    local s = steps[k]
+    s.shear_stress_Pa = curve.shear_stress[i]
+    s.shear_rate = curve.shear_rate[i]
+    s.n_local = curve.n_local[i]
+    s.hb_torque_Nm = measure.vane_torque_hb(vane_geometry, {tau0 = fit.tau0, K = fit.K, n = fit.n}, s.omega)
+    fsteps[i] = s
   end
   -- A flow curve only if the torque rises and the rate carries a share of the stress
   -- (lib/rheology.lua).
-  fit_warning, rate_share = rheology.flow_curve_warning(steps, fit)
+  fit_warning, rate_share = rheology.flow_curve_warning(fsteps, fit)
+  if unsteady_in_fit > 0 then
+    fit_warning = string.format("%s%d of the %d fitted steps did not become steady", fit_warning and (fit_warning .. "; ") or "",
+                                unsteady_in_fit, #fitted)
+  end
   if fit_warning then
     io.stderr:write("warning: rheometer: ", fit_warning, "\n")
   end
 else
-  fit_error = tostring(curve)
-  io.stderr:write("warning: rheometer: no flow curve: ", fit_error, "\n")
-  for _, s in ipairs(steps) do s.shear_stress_Pa = measure.vane_shear_stress(vane_geometry, s.torque_Nm) end
+  fit_error = string.format("%d of %d steps steady%s: %s", #fitted - unsteady_in_fit, #steps,
+                            P.fit_unsteady and " (all fitted)" or "", tostring(curve))
+  if #speeds > 0 then io.stderr:write("warning: rheometer: no flow curve: ", fit_error, "\n") end
+end
+for _, s in ipairs(down) do s.shear_stress_Pa = measure.vane_shear_stress(vane_geometry, s.torque_Nm) end
+-- Hysteresis: up against down at each speed of both sweeps, (T_up − T_down) / T_up.
+local hysteresis = {}
+for _, d in ipairs(down) do
+  for _, u in ipairs(steps) do
+    if u.speed_rpm == d.speed_rpm then
+      hysteresis[#hysteresis + 1] = {speed_rpm = d.speed_rpm, up_Nm = u.torque_Nm, down_Nm = d.torque_Nm,
+                                     relative = (u.torque_Nm - d.torque_Nm) / u.torque_Nm, both_steady = u.steady and d.steady}
+    end
+  end
+end
+local function column(list, key)
+  local out = {}
+  for k, s in ipairs(list) do out[k] = s[key] end
+  return out
 end
 
 -- 5. Measured torques.
@@ -203,6 +304,7 @@ local comparison
 if P.measured_csv ~= "" then
   local rows = util.read_csv(P.measured_csv)
   local lw = {}
+  local omegas, torques = column(steps, "omega"), column(steps, "torque_Nm")  -- every up step, steady or not
   for k, w in ipairs(omegas) do lw[k] = math.log(w) end
   local function simulated_at(rpm)  -- linear in ln Ω between the simulated speeds
     local x = math.log(measure.rpm_to_rad(rpm))
@@ -238,21 +340,34 @@ end
 -- Pictures.
 local pictures = {}
 if P.pictures then
-  local rows = {}
-  for k, s in ipairs(samples) do rows[k] = {s.t, s.torque} end
-  util.write_columns("torque.dat", "t_s torque_Nm (resisting torque on the vane)", rows)
+  util.write_columns("torque.dat", "t_s torque_Nm phase (resisting torque on the vane; phase 0 start-up, 1 up, 2 down)", samples)
   local st = {}
-  for k, s in ipairs(steps) do st[k] = {(k - P.average_fraction) * P.step_time, k * P.step_time, s.torque_Nm, s.speed_rpm} end
-  util.write_columns("torque_steps.dat", "t_from t_to steady_torque_Nm speed_rpm", st)
+  for _, list in ipairs({steps, down}) do
+    for _, s in ipairs(list) do st[#st + 1] = {s.t_from, s.t_to, s.torque_Nm, s.speed_rpm, s.steady and 1 or 0} end
+  end
+  util.write_columns("torque_steps.dat", "t_from t_to steady_torque_Nm speed_rpm steady", st)
   pictures.torque = util.gnuplot("torque", string.format([[
-set title 'Vane torque against time (speed steps %s rpm)'
+set title 'Vane torque against time (speed steps %s rpm%s)'
 set xlabel 't [s]'; set ylabel 'torque [N m]'; set grid; set key top left
 plot '%s' using 1:2 with lines lc rgb '#8b5a2b' title 'torque', \
-     '%s' using 1:3:($2-$1):(0) with vectors nohead lw 3 lc rgb 'blue' title 'steady torque (mean)']],
-    P.speeds_rpm, util.out("torque.dat"), util.out("torque_steps.dat")))
+     '%s' using 1:($5 > 0 ? $3 : 1/0):($2-$1):(0) with vectors nohead lw 3 lc rgb 'blue' title 'steady torque (mean of the compared windows)', \
+     '%s' using 1:($5 > 0 ? 1/0 : $3):($2-$1):(0) with vectors nohead lw 3 lc rgb 'red' title 'not steady']],
+    P.speeds_rpm, P.down_sweep and ", up and down" or "", util.out("torque.dat"), util.out("torque_steps.dat"),
+    util.out("torque_steps.dat")))
+  if startup then
+    pictures.startup = util.gnuplot("startup", string.format([[
+set title sprintf('Vane start-up at %%g rpm: peak %%.4g N m at %%.1f deg, yield stress %%.4g Pa', %g, %g, %g, %g)
+set xlabel 'rotation angle [deg]'; set ylabel 'torque [N m]'; set grid; set key bottom right
+plot '%s' using 1:2 with lines lc rgb '#c8a27a' title 'torque', \
+     '%s' using 1:3 with lines lw 2 lc rgb '#8b5a2b' title 'smoothed', \
+     '-' using 1:2 with points pt 7 ps 1.5 lc rgb 'blue' title 'peak'
+%g %g
+e]], startup.speed_rpm, startup.peak_torque_Nm, startup.peak_angle_deg, startup.yield_stress_Pa, util.out("startup.dat"),
+      util.out("startup.dat"), startup.peak_angle_deg, startup.peak_torque_Nm))
+  end
   if fit then
     local fc = {}
-    for k, s in ipairs(steps) do fc[k] = {s.shear_rate, s.shear_stress_Pa} end
+    for _, s in ipairs(steps) do if s.shear_rate then fc[#fc + 1] = {s.shear_rate, s.shear_stress_Pa} end end
     util.write_columns("flow_curve.dat", "shear_rate_1/s shear_stress_Pa", fc)
     pictures.flow_curve = util.gnuplot("flow_curve", string.format([[
 set title sprintf('Flow curve: Herschel-Bulkley tau0 = %%.3g Pa, K = %%.3g Pa s^n, n = %%.3f', %g, %g, %g)
@@ -265,7 +380,20 @@ plot '%s' using 1:2 with points pt 7 ps 1.2 title 'vane (simulated)', \
 end
 
 paddy.result{
+  -- Up-sweep, aligned with speeds_rpm: the steady torque (mean of the compared windows) and
+  -- whether the step became steady; details per step in steps (down_sweep likewise).
+  speeds_rpm = speeds,
+  torque_Nm = column(steps, "torque_Nm"),
+  steady = column(steps, "steady"),
   steps = steps,
+  down_sweep = P.down_sweep and {speeds_rpm = column(down, "speed_rpm"), torque_Nm = column(down, "torque_Nm"),
+                                 steady = column(down, "steady"), steps = down} or nil,
+  hysteresis = P.down_sweep and hysteresis or nil,
+  steady_criterion = {step_time = P.step_time, max_step_time = P.max_step_time, min_step_angle_deg = P.min_step_angle,
+                      window_angle_deg = P.window_angle, windows = P.steady_windows, trend_alpha = P.trend_alpha,
+                      drift_tolerance = P.drift_tolerance},
+  startup = startup,
+  yield_stress_Pa = startup and startup.yield_stress_Pa or nil,  -- vane start-up peak (Nguyen & Boger 1983)
   herschel_bulkley = fit,
   fit_error = fit_error,
   fit_warning = fit_warning,
@@ -289,16 +417,29 @@ paddy.result{
 
 -- What the user sees on stdout at the end.
 print("model       " .. mud.describe(P))
-print("speed [rpm]   steady torque [N m]   shear stress [Pa]")
-for _, st in ipairs(steps) do
-  print(string.format("%11g   %8.4f +- %-8.4f   %10.1f", st.speed_rpm, st.torque_Nm, st.torque_std, st.shear_stress_Pa))
+local function print_steps(title, list)
+  print(title)
+  print("speed [rpm]   steady torque [N m]   shear stress [Pa]   steady   angle [deg]   time [s]")
+  for _, st in ipairs(list) do
+    print(string.format("%11g   %8.4f +- %-8.4f   %10.1f   %6s   %11.0f   %8.3f", st.speed_rpm, st.torque_Nm, st.torque_se,
+                        st.shear_stress_Pa, st.steady and "yes" or "NO", st.angle_deg, st.duration_s))
+  end
+end
+if #steps > 0 then print_steps("up-sweep", steps) end
+if #down > 0 then print_steps("down-sweep", down) end
+if startup then
+  print(string.format("start-up at %g rpm: peak torque %.4f N m at %.1f deg%s -> yield stress %.4g Pa (vane relation)",
+                      startup.speed_rpm, startup.peak_torque_Nm, startup.peak_angle_deg,
+                      startup.peak_reached and "" or " (still rising: a lower bound)", startup.yield_stress_Pa))
 end
 if fit then
-  print(string.format("Herschel-Bulkley  tau0 = %.4g Pa, K = %.4g Pa s^n, n = %.3f, R^2 = %.3f%s", fit.tau0, fit.K, fit.n,
-                      fit.r2, fit_warning and "  (see the warning above)" or ""))
+  print(string.format("Herschel-Bulkley  tau0 = %.4g Pa, K = %.4g Pa s^n, n = %.3f, R^2 = %.3f, from %d steady steps%s", fit.tau0,
+                      fit.K, fit.n, fit.r2, fit.steps - fit.unsteady_steps, fit_warning and "  (see the warning above)" or ""))
+else
+  print("Herschel-Bulkley: no fit (" .. tostring(fit_error) .. ")")
 end
 if comparison then
   print(string.format("against %s: mean relative error %.1f %%, largest %.1f %%", comparison.file,
                       100 * comparison.mean_relative_error, 100 * comparison.max_relative_error))
 end
-util.print_outputs(pictures, {"torque", "flow_curve"})
+util.print_outputs(pictures, {"torque", "startup", "flow_curve"})

@@ -266,8 +266,14 @@ elseif(CASE STREQUAL "rheometer_mini")
   #    stress is mu_eff sigma plus cohesion with mu_eff ~ 0.1-1. tau = T / factor must lie within
   #    [sigma/100, 10 sigma] = [5, 5000] Pa: a torque in the wrong unit (N mm), about the wrong
   #    axis, or including the vane's own weight or inertia falls outside.
+  # The run: a short start-up, three speeds up and two down, each until steady by a coarse
+  # criterion or 0.3 s. Besides the bounds above: the torque list must follow speeds_rpm, every
+  # step called steady must pass its own criterion, and the Herschel-Bulkley fit (told to use
+  # unsteady steps too) must count the unsteady ones.
   run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
-            --set particle_diameter=0.012 --set speeds_rpm=20,40,80 --set step_time=0.15
+            --set particle_diameter=0.012 --set speeds_rpm=20,40,80 --set max_step_time=0.3
+            --set min_step_angle=30 --set window_angle=5 --set steady_windows=4 --set fit_unsteady=true
+            --set startup_rpm=10 --set startup_angle=12
             --set settle_max_time=0.6 --set min_rest_time=0.1 --set sample_interval=0.005
             --set snapshot_interval=0 --set vane_diameter=0.05 --set vane_height=0.06
             --set vane_bottom=0.03 --set fill_level=0.12 --set cup_diameter=0.1 --set mud_density=1680)
@@ -275,13 +281,40 @@ elseif(CASE STREQUAL "rheometer_mini")
   result(factor vane torque_factor_m3)
   expect_number(${factor} GREATER 3.0097e-4 "vane torque factor [m^3]")
   expect_number(${factor} LESS 3.0117e-4 "vane torque factor [m^3]")
+  set(unsteady 0)
   foreach(k 0 1 2)
     result(t steps ${k} torque_Nm)
     expect_number(${t} GREATER 0 "steady torque of step ${k}")
     result(tau steps ${k} shear_stress_Pa)
     expect_number(${tau} GREATER 5 "shear stress of step ${k} [Pa]")
     expect_number(${tau} LESS 5000 "shear stress of step ${k} [Pa]")
+    result(tl torque_Nm ${k})
+    expect_number(${tl} EQUAL ${t} "torque_Nm[${k}] is steps[${k}].torque_Nm")
+    result(steady steps ${k} steady)
+    result(angle steps ${k} angle_deg)
+    result(tstep steps ${k} duration_s)
+    if(steady)
+      result(p steps ${k} trend_p)
+      result(drift steps ${k} drift)
+      expect_number(${angle} GREATER 29.999 "steady step ${k}: angle turned")
+      expect_number(${p} GREATER 0.05 "steady step ${k}: trend p")
+      expect_number(${drift} LESS 0.05 "steady step ${k}: drift")
+    else()
+      math(EXPR unsteady "${unsteady} + 1")
+      expect_number(${tstep} GREATER 0.2999 "unsteady step ${k} ran max_step_time")
+    endif()
   endforeach()
+  result(fit_unsteady herschel_bulkley unsteady_steps)
+  expect_number(${fit_unsteady} EQUAL ${unsteady} "fit counts the unsteady steps")
+  result_length(nd down_sweep torque_Nm)
+  expect_number(${nd} EQUAL 2 "down-sweep steps (40, 20 rpm)")
+  result(ds down_sweep speeds_rpm 0)
+  expect_number(${ds} EQUAL 40 "first down-sweep speed")
+  result(peak startup peak_torque_Nm)
+  result(tau_y yield_stress_Pa)
+  expect_number(${peak} GREATER 0 "start-up peak torque")
+  expect_number(${tau_y} GREATER 0 "vane yield stress")
+  expect_file(${WORK}/out/startup.png)
   expect_file(${WORK}/out/torque.png)
   expect_file(${WORK}/out/vane_loads.csv)
   # stdout: one line per speed with its steady torque (the 80 rpm line carries result.json's value
