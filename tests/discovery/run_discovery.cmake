@@ -4,60 +4,26 @@ cmake_minimum_required(VERSION 3.20)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
-function(run_paddy out_code)
-  string(TIMESTAMP t0 "%s")
-  execute_process(COMMAND ${PADDY} ${ARGN} WORKING_DIRECTORY ${WORK}
-                  RESULT_VARIABLE code OUTPUT_VARIABLE so ERROR_VARIABLE se)
-  string(TIMESTAMP t1 "%s")
-  math(EXPR secs "${t1} - ${t0}")
-  message(STATUS "paddy ${ARGN} -> ${code} in ${secs} s\n--- stdout:\n${so}\n--- stderr:\n${se}")
-  set(${out_code} ${code} PARENT_SCOPE)
-  set(LAST_STDERR "${se}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../case_helpers.cmake)
 
-function(expect_code actual expected)
-  if(NOT "${actual}" STREQUAL "${expected}")
-    message(FATAL_ERROR "exit code ${actual}, expected ${expected}")
-  endif()
-endfunction()
-
-# results.<path...> of <dir>/result.json into `var` (fatal if missing).
+# results.<path...> of <dir>/result.json into `var` (fatal if missing); length_of: an array's length.
 function(result_of dir var)
-  file(READ ${WORK}/${dir}/result.json doc)
-  string(JSON value ERROR_VARIABLE err GET "${doc}" results ${ARGN})
-  if(err)
-    message(FATAL_ERROR "${dir}/result.json: results ${ARGN}: ${err}")
-  endif()
+  result_json(GET ${dir} value ${ARGN})
   set(${var} "${value}" PARENT_SCOPE)
 endfunction()
-
 function(length_of dir var)
-  file(READ ${WORK}/${dir}/result.json doc)
-  string(JSON value ERROR_VARIABLE err LENGTH "${doc}" results ${ARGN})
-  if(err)
-    message(FATAL_ERROR "${dir}/result.json: results ${ARGN}: ${err}")
-  endif()
+  result_json(LENGTH ${dir} value ${ARGN})
   set(${var} "${value}" PARENT_SCOPE)
-endfunction()
-
-function(expect_number value op bound what)
-  if(NOT value MATCHES "^-?[0-9.]+([eE][-+]?[0-9]+)?$")
-    message(FATAL_ERROR "${what} = '${value}' is not a finite number")
-  endif()
-  if(NOT (value ${op} bound))
-    message(FATAL_ERROR "${what} = ${value}, expected ${op} ${bound}")
-  endif()
-  message(STATUS "ok: ${what} = ${value} (${op} ${bound})")
 endfunction()
 
 if(CASE STREQUAL "lib")
-  run_paddy(code run ${HERE}/discovery_lib.lua --out out --threads 1)
+  run_paddy(code se run ${HERE}/discovery_lib.lua --out out --threads 1)
   expect_code(${code} 0)
   result_of(out ok ok)
 
 elseif(CASE STREQUAL "input_errors")
   # No input file given; an unknown script; a sigma missing: each refused with file, key, allowed values.
-  run_paddy(code run ${SOURCE}/experiments/discover.lua --out out --threads 1)
+  run_paddy(code se run ${SOURCE}/experiments/discover.lua --out out --threads 1)
   if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "give the input file: --set input=FILE.json")
     message(FATAL_ERROR "discover.lua without input: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
@@ -65,14 +31,14 @@ elseif(CASE STREQUAL "input_errors")
    "measured": {"slump_mm": 231}, "sigma": {"slump_mm": 3}}],
  "free_parameters": [{"parameter": "jkr_surface_energy", "low": 0, "high": 0.2}],
  "candidates": [{"name": "wall_adhesion", "parameter": "mud_steel_surface_energy", "low": 0, "high": 0.3}]}]=])
-  run_paddy(code run ${SOURCE}/experiments/discover.lua --out out --threads 1 --set input=${WORK}/bad.json)
+  run_paddy(code se run ${SOURCE}/experiments/discover.lua --out out --threads 1 --set input=${WORK}/bad.json)
   if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "discovery input '[^']*bad.json': experiments\\[1\\]\\.script = cone\\.lua \\(allowed: slump\\.lua, rheometer\\.lua\\)")
     message(FATAL_ERROR "bad script: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
   file(WRITE ${WORK}/bad2.json [=[{"experiments": [{"name": "slump_slow", "script": "slump.lua",
    "measured": {"slump_mm": 231, "slump_flow_mm": 480}, "sigma": {"slump_mm": 3}}],
  "free_parameters": [], "candidates": [{"name": "w", "parameter": "mud_steel_rolling_friction", "low": 0, "high": 0.3}]}]=])
-  run_paddy(code run ${SOURCE}/experiments/discover.lua --out out --threads 1 --set input=${WORK}/bad2.json)
+  run_paddy(code se run ${SOURCE}/experiments/discover.lua --out out --threads 1 --set input=${WORK}/bad2.json)
   if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "experiments\\[1\\]\\.sigma\\.slump_flow_mm is missing")
     message(FATAL_ERROR "missing sigma: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
@@ -81,7 +47,7 @@ elseif(CASE STREQUAL "slump_observables")
   # ~400 spheres of 25 mm, a fast lift. A broken sampler fails: wrong lengths (grids must not depend
   # on the run), a profile that does not fall from the axis to the plate, a history that does not
   # rise, no downward pull on the cone while it lifts out of sticky mud.
-  run_paddy(code run ${SOURCE}/experiments/slump.lua --out out --threads 1 --seed 2 --set particle_diameter=0.025
+  run_paddy(code se run ${SOURCE}/experiments/slump.lua --out out --threads 1 --seed 2 --set particle_diameter=0.025
             --set lift_speed=0.3 --set settle_max_time=1.0 --set min_rest_time=0.2 --set max_time=3
             --set pictures=false --set snapshot_interval=0 --set progress=false)
   expect_code(${code} 0)
@@ -116,7 +82,7 @@ elseif(CASE STREQUAL "blind_tiny" OR CASE STREQUAL "blind_full")
   if(CASE STREQUAL "blind_tiny")
     set(args --set tiny=true)
   endif()
-  run_paddy(code run ${SOURCE}/experiments/validation/discovery_blind.lua --out out --threads 2 --seed 1 ${args})
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out out --threads 2 --seed 1 ${args})
   expect_code(${code} 0)
   result_of(out failed summary failed)
   expect_number(${failed} EQUAL 0 "failed trials")

@@ -6,54 +6,16 @@ cmake_minimum_required(VERSION 3.20)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
-function(run_paddy out_code out_stderr)
-  string(TIMESTAMP t0 "%s")
-  execute_process(COMMAND ${PADDY} ${ARGN} WORKING_DIRECTORY ${WORK}
-                  RESULT_VARIABLE code OUTPUT_VARIABLE so ERROR_VARIABLE se)
-  string(TIMESTAMP t1 "%s")
-  math(EXPR secs "${t1} - ${t0}")
-  message(STATUS "paddy ${ARGN} -> ${code} in ${secs} s\n--- stdout:\n${so}\n--- stderr:\n${se}")
-  set(${out_code} ${code} PARENT_SCOPE)
-  set(${out_stderr} "${se}" PARENT_SCOPE)
-  set(LAST_STDOUT "${so}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../case_helpers.cmake)
 
-function(expect_code actual expected)
-  if(NOT "${actual}" STREQUAL "${expected}")
-    message(FATAL_ERROR "exit code ${actual}, expected ${expected}")
-  endif()
-endfunction()
-
-# Reads results.<path...> of result.json into `var` (fatal if missing).
+# results.<path...> of out/result.json into `var` (fatal if missing); result_length: an array's length.
 function(result var)
-  file(READ ${WORK}/out/result.json doc)
-  string(JSON value ERROR_VARIABLE err GET "${doc}" results ${ARGN})
-  if(err)
-    message(FATAL_ERROR "result.json: results ${ARGN}: ${err}")
-  endif()
+  result_json(GET out value ${ARGN})
   set(${var} "${value}" PARENT_SCOPE)
 endfunction()
-
-# Compares a floating-point number with a bound: expect_number(<value> GREATER|LESS <bound> <what>).
-# Length of the array results.<path...> into `var`.
 function(result_length var)
-  file(READ ${WORK}/out/result.json doc)
-  string(JSON value ERROR_VARIABLE err LENGTH "${doc}" results ${ARGN})
-  if(err)
-    message(FATAL_ERROR "result.json: results ${ARGN}: ${err}")
-  endif()
+  result_json(LENGTH out value ${ARGN})
   set(${var} "${value}" PARENT_SCOPE)
-endfunction()
-
-function(expect_number value op bound what)
-  if(NOT value MATCHES "^-?[0-9.]+([eE][-+]?[0-9]+)?$")
-    message(FATAL_ERROR "${what} = '${value}' is not a finite number")
-  endif()
-  # CMake compares decimal strings as numbers (floating point) in if(... GREATER ...).
-  if(NOT (value ${op} bound))
-    message(FATAL_ERROR "${what} = ${value}, expected ${op} ${bound}")
-  endif()
-  message(STATUS "ok: ${what} = ${value} (${op} ${bound})")
 endfunction()
 
 # Integer part of a decimal number (truncated toward zero), for math(EXPR) on whole units.
