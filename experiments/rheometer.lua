@@ -27,6 +27,10 @@ local pour = require("lib.pour")
 local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
 local rheology = require("lib.rheology")
+local sampler = require("lib.sampler")
+local trigger = require("lib.trigger")
+local phase = require("lib.phase")
+local chart = require("lib.chart")
 local measure = require("paddy.measure")
 
 local P = mud.resolve(paddy.parameters(mud.parameters{
@@ -113,10 +117,9 @@ if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fractio
 local dt = sim:timestep{fraction = dt_fraction}
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("rheometer: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", filled, d * 1000, cg.alpha, dt))
-local t0 = sim:time()
-sim:run{duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_every, progress = P.progress,
-        callback = function(s) return not (s:time() - t0 >= P.min_rest_time and util.rms_speed(s) < P.rest_speed) end}
-local settle_time = sim:time() - t0
+local settle = phase.run(sim, {duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_every, progress = P.progress,
+                              stop = trigger.all{trigger.elapsed(P.min_rest_time), trigger.at_rest(P.rest_speed)}})
+local settle_time = settle.duration
 local struck = sim:remove_if(function(i, x, y, z, r) return z + r > P.fill_level end)
 if poured then
   pour.check_full("rheometer", struck, P.fill_level)
@@ -157,29 +160,32 @@ local vane_geometry = {diameter = P.vane_diameter, height = P.vane_height, cup_d
 
 -- 3. The vane at rest for insert_time, then the start-up test and the speed steps; each runs at a
 -- constant speed (sim:set_motion) and samples the resisting torque −T·ẑ against the angle turned.
-if P.insert_time > 0 then sim:run{duration = P.insert_time, snapshot_every = snapshot_every, progress = P.progress} end
+if P.insert_time > 0 then phase.run(sim, {duration = P.insert_time, snapshot_every = snapshot_every, progress = P.progress}) end
 local t_start = sim:time()
-local samples = {}  -- {t, torque, phase code} with t from t_start, for torque.dat
 local PHASE_CODE = {startup = 0, up = 1, down = 2}
+local current_phase
+local function resisting_torque(s) return -s:wall_axial_torque(vane) end
+-- Every torque sample of the start-up and the steps against time from t_start (torque.dat).
+local torque_log = sampler.new{
+  {"t", function(s) return s:time() - t_start end},
+  {"torque", resisting_torque},
+  {"phase", function() return PHASE_CODE[current_phase] end},
+}
 local criterion = {window_angle = math.rad(P.window_angle), windows = P.steady_windows, min_angle = math.rad(P.min_step_angle),
                    alpha = P.trend_alpha, drift_tolerance = P.drift_tolerance}
 
--- Turns the vane at `rpm` for `duration` (stop(angle, angles, torques) → true ends it early);
--- returns the angles [rad from the phase start], torques, start and end time.
-local function turn(rpm, duration, every, phase, stop)
-  local w = measure.rpm_to_rad(rpm)
-  sim:set_motion(vane, {type = "rotate", point = {0, 0, z_vane}, axis = {0, 0, 1}, speed = w})
-  local a0, t0 = sim:wall_pose(vane).angle, sim:time()
-  local angles, torques = {}, {}
-  sim:run{duration = duration, every = every, snapshot_every = snapshot_every, progress = P.progress,
-          callback = function(s)
-            s:record_wall_loads(vane)
-            local a, T = s:wall_pose(vane).angle - a0, -s:wall_axial_torque(vane)
-            angles[#angles + 1], torques[#torques + 1] = a, T
-            samples[#samples + 1] = {s:time() - t_start, T, PHASE_CODE[phase]}
-            return not (stop and stop(a, angles, torques))
-          end}
-  return angles, torques, t0 - t_start, sim:time() - t_start
+-- Turns the vane at `rpm` for `duration`, sampling the angle [rad from the phase start] and the
+-- torque every `every` seconds (stop_when(step sampler) → a trigger that ends it early); returns
+-- the angles, torques, start and end time.
+local function turn(rpm, duration, every, phase_name, stop_when)
+  sim:set_motion(vane, {type = "rotate", point = {0, 0, z_vane}, axis = {0, 0, 1}, speed = measure.rpm_to_rad(rpm)})
+  local a0 = sim:wall_pose(vane).angle
+  local step = sampler.new{{"angle", function(s) return s:wall_pose(vane).angle - a0 end}, {"torque", resisting_torque}}
+  current_phase = phase_name
+  local run = phase.run(sim, {duration = duration, every = every, snapshot_every = snapshot_every, progress = P.progress,
+                              before = function(s) s:record_wall_loads(vane) end, sample = {step, torque_log},
+                              stop = stop_when and stop_when(step)})
+  return step:column("angle"), step:column("torque"), run.t0 - t_start, run.t1 - t_start
 end
 
 -- 3a. Start-up (stress growth) at startup_rpm from rest: peak torque → yield stress (Nguyen & Boger).
@@ -203,28 +209,31 @@ end
 
 -- 3b. Speed steps: each until steady (or max_step_time), or step_time long.
 local window = math.rad(P.window_angle)
-local function speed_step(rpm, phase)
-  local w = measure.rpm_to_rad(rpm)
-  local every = math.min(P.sample_interval, window / w / P.samples_per_window)
-  local seen = 0
-  local stop = nil
-  if P.step_time == 0 then
-    stop = function(a, angles, torques)  -- judge at each completed window
-      local n = math.floor(a / window)
-      if n <= seen then return false end
-      seen = n
-      if n < P.steady_windows or a < criterion.min_angle then return false end
-      local c = {angle = angles, torque = torques}
-      for k, v in pairs(criterion) do c[k] = v end
-      return measure.steady_torque(c).steady
-    end
-  end
-  local angles, torques, t0, t1 = turn(rpm, P.step_time > 0 and P.step_time or P.max_step_time, every, phase, stop)
+local function steady_torque(angles, torques)
   local c = {angle = angles, torque = torques}
   for k, v in pairs(criterion) do c[k] = v end
-  local v = measure.steady_torque(c)
+  return measure.steady_torque(c)
+end
+-- step_time = 0: the step ends when its torque is steady, judged at each completed window.
+local function steady_step(step)
+  local function angle() return step:last().angle end
+  return trigger.all{
+    trigger.periodic(angle, window),
+    trigger.named("steady", function()
+      local a = angle()
+      if math.floor(a / window) < P.steady_windows or a < criterion.min_angle then return false end
+      return steady_torque(step:column("angle"), step:column("torque")).steady
+    end),
+  }
+end
+local function speed_step(rpm, phase_name)
+  local w = measure.rpm_to_rad(rpm)
+  local every = math.min(P.sample_interval, window / w / P.samples_per_window)
+  local angles, torques, t0, t1 = turn(rpm, P.step_time > 0 and P.step_time or P.max_step_time, every, phase_name,
+                                       P.step_time == 0 and steady_step or nil)
+  local v = steady_torque(angles, torques)
   if not v.steady then
-    io.stderr:write(string.format("warning: rheometer: %s %g rpm not steady after %.3g s (%.0f deg): %s\n", phase, rpm,
+    io.stderr:write(string.format("warning: rheometer: %s %g rpm not steady after %.3g s (%.0f deg): %s\n", phase_name, rpm,
                                   t1 - t0, math.deg(v.angle), v.reason))
   end
   return {speed_rpm = rpm, omega = w, steady = v.steady, not_steady_because = v.steady and nil or v.reason,
@@ -340,42 +349,49 @@ end
 -- Pictures.
 local pictures = {}
 if P.pictures then
-  util.write_columns("torque.dat", "t_s torque_Nm phase (resisting torque on the vane; phase 0 start-up, 1 up, 2 down)", samples)
+  local torque_dat = torque_log:write("torque.dat", "t_s torque_Nm phase (resisting torque on the vane; phase 0 start-up, 1 up, 2 down)",
+                                      {"t", "torque", "phase"})
   local st = {}
   for _, list in ipairs({steps, down}) do
     for _, s in ipairs(list) do st[#st + 1] = {s.t_from, s.t_to, s.torque_Nm, s.speed_rpm, s.steady and 1 or 0} end
   end
-  util.write_columns("torque_steps.dat", "t_from t_to steady_torque_Nm speed_rpm steady", st)
-  pictures.torque = util.gnuplot("torque", string.format([[
-set title 'Vane torque against time (speed steps %s rpm%s)'
-set xlabel 't [s]'; set ylabel 'torque [N m]'; set grid; set key top left
-plot '%s' using 1:2 with lines lc rgb '#8b5a2b' title 'torque', \
-     '%s' using 1:($5 > 0 ? $3 : 1/0):($2-$1):(0) with vectors nohead lw 3 lc rgb 'blue' title 'steady torque (mean of the compared windows)', \
-     '%s' using 1:($5 > 0 ? 1/0 : $3):($2-$1):(0) with vectors nohead lw 3 lc rgb 'red' title 'not steady']],
-    P.speeds_rpm, P.down_sweep and ", up and down" or "", util.out("torque.dat"), util.out("torque_steps.dat"),
-    util.out("torque_steps.dat")))
+  local steps_dat = util.write_columns("torque_steps.dat", "t_from t_to steady_torque_Nm speed_rpm steady", st)
+  pictures.torque = chart.plot("torque", {
+    title = string.format("Vane torque against time (speed steps %s rpm%s)", P.speeds_rpm, P.down_sweep and ", up and down" or ""),
+    xlabel = "t [s]", ylabel = "torque [N m]", settings = {"set key top left"},
+    series = {
+      {file = torque_dat, using = "1:2", with = "lines lc rgb '#8b5a2b'", title = "torque"},
+      {file = steps_dat, using = "1:($5 > 0 ? $3 : 1/0):($2-$1):(0)", with = "vectors nohead lw 3 lc rgb 'blue'",
+       title = "steady torque (mean of the compared windows)"},
+      {file = steps_dat, using = "1:($5 > 0 ? 1/0 : $3):($2-$1):(0)", with = "vectors nohead lw 3 lc rgb 'red'", title = "not steady"},
+    },
+  })
   if startup then
-    pictures.startup = util.gnuplot("startup", string.format([[
-set title sprintf('Vane start-up at %%g rpm: peak %%.4g N m at %%.1f deg, yield stress %%.4g Pa', %g, %g, %g, %g)
-set xlabel 'rotation angle [deg]'; set ylabel 'torque [N m]'; set grid; set key bottom right
-plot '%s' using 1:2 with lines lc rgb '#c8a27a' title 'torque', \
-     '%s' using 1:3 with lines lw 2 lc rgb '#8b5a2b' title 'smoothed', \
-     '-' using 1:2 with points pt 7 ps 1.5 lc rgb 'blue' title 'peak'
-%g %g
-e]], startup.speed_rpm, startup.peak_torque_Nm, startup.peak_angle_deg, startup.yield_stress_Pa, util.out("startup.dat"),
-      util.out("startup.dat"), startup.peak_angle_deg, startup.peak_torque_Nm))
+    local startup_dat = util.out("startup.dat")
+    pictures.startup = chart.plot("startup", {
+      title = string.format("Vane start-up at %g rpm: peak %.4g N m at %.1f deg, yield stress %.4g Pa", startup.speed_rpm,
+                            startup.peak_torque_Nm, startup.peak_angle_deg, startup.yield_stress_Pa),
+      xlabel = "rotation angle [deg]", ylabel = "torque [N m]", settings = {"set key bottom right"},
+      series = {
+        {file = startup_dat, using = "1:2", with = "lines lc rgb '#c8a27a'", title = "torque"},
+        {file = startup_dat, using = "1:3", with = "lines lw 2 lc rgb '#8b5a2b'", title = "smoothed"},
+        {rows = {{startup.peak_angle_deg, startup.peak_torque_Nm}}, using = "1:2", with = "points pt 7 ps 1.5 lc rgb 'blue'",
+         title = "peak"},
+      },
+    })
   end
   if fit then
     local fc = {}
     for _, s in ipairs(steps) do if s.shear_rate then fc[#fc + 1] = {s.shear_rate, s.shear_stress_Pa} end end
-    util.write_columns("flow_curve.dat", "shear_rate_1/s shear_stress_Pa", fc)
-    pictures.flow_curve = util.gnuplot("flow_curve", string.format([[
-set title sprintf('Flow curve: Herschel-Bulkley tau0 = %%.3g Pa, K = %%.3g Pa s^n, n = %%.3f', %g, %g, %g)
-set xlabel 'shear rate [1/s]'; set ylabel 'shear stress [Pa]'; set grid; set key top left
-set xrange [0:*]; set yrange [0:*]
-plot '%s' using 1:2 with points pt 7 ps 1.2 title 'vane (simulated)', \
-     %g + %g * x**%g with lines lw 2 title 'Herschel-Bulkley fit']],
-      fit.tau0, fit.K, fit.n, util.out("flow_curve.dat"), fit.tau0, fit.K, fit.n))
+    local curve_dat = util.write_columns("flow_curve.dat", "shear_rate_1/s shear_stress_Pa", fc)
+    pictures.flow_curve = chart.plot("flow_curve", {
+      title = string.format("Flow curve: Herschel-Bulkley tau0 = %.3g Pa, K = %.3g Pa s^n, n = %.3f", fit.tau0, fit.K, fit.n),
+      xlabel = "shear rate [1/s]", ylabel = "shear stress [Pa]", settings = {"set key top left", "set xrange [0:*]; set yrange [0:*]"},
+      series = {
+        {file = curve_dat, using = "1:2", with = "points pt 7 ps 1.2", title = "vane (simulated)"},
+        {expr = string.format("%g + %g * x**%g", fit.tau0, fit.K, fit.n), with = "lines lw 2", title = "Herschel-Bulkley fit"},
+      },
+    })
   end
 end
 

@@ -26,6 +26,11 @@ local pour = require("lib.pour")
 local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
 local observables = require("lib.slump_observables")
+local reference = require("lib.reference_measurement")
+local sampler = require("lib.sampler")
+local trigger = require("lib.trigger")
+local phase = require("lib.phase")
+local chart = require("lib.chart")
 
 local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04,
@@ -113,12 +118,12 @@ end
 local dt_fraction, dt_damping_factor = P.timestep_fraction, 1
 if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fraction(P, cg.params) end
 local dt = sim:timestep{fraction = dt_fraction}
-local mass = util.total_mass(sim, P.mud_density)
 io.stderr:write(string.format("slump: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s%s\n",
                               filled, d * 1000, cg.alpha, dt,
                               poured and string.format(", poured from %.2f m", poured.top_z) or ""))
 
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
+local measured = reference.slump()  -- the reference's 231 / 480 mm (experiments/calibration/paddy_mud.json)
 
 -- Highest particle top (z + r) under the cone's bottom ring (those the rising cone could touch).
 -- During the lift (lifting = true) spheres that move up with the cone (stuck to its inside:
@@ -136,50 +141,46 @@ local function top_under_cone(lifting)
   end
   return top
 end
+local function measure_slump()
+  return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
+end
 
--- 1. Settle inside the fixed cone, then strike off.
+-- 1. Settle inside the fixed cone until at rest (kinetic energy, or the top under the cone steady
+-- within slump_tolerance over rest_window), then strike off at the rim.
 local settle_time, struck = 0, 0
 if cone then
-  local t0, tops = sim:time(), {}
-  sim:run{
-    duration = P.settle_max_time, every = P.history_interval, snapshot_every = snapshot_every,
-    progress = P.progress,
-    callback = function(s)
-      -- At rest: KE criterion, or the top under the cone steady within slump_tolerance over rest_window.
-      local t = s:time() - t0
-      tops[#tops + 1] = {t = t, top = top_under_cone()}
-      local lo, hi, span = math.huge, -math.huge, 0
-      for k = #tops, 1, -1 do
-        if tops[k].t < t - P.rest_window - 1e-9 then break end
-        lo, hi, span = math.min(lo, tops[k].top), math.max(hi, tops[k].top), t - tops[k].t
-      end
-      local steady = P.slump_tolerance > 0 and span >= P.rest_window - 1e-9 and hi - lo <= P.slump_tolerance
-      return not (t >= P.min_rest_time and (util.rms_speed(s, mass) < P.rest_speed or steady))
-    end,
+  local t_settle = sim:time()
+  local tops = sampler.new{
+    {"t", function(s) return s:time() - t_settle end},
+    {"top", function() return top_under_cone() end},
   }
-  settle_time = sim:time() - t0
+  local settle = phase.run(sim, {
+    duration = P.settle_max_time, every = P.history_interval, snapshot_every = snapshot_every, progress = P.progress,
+    sample = tops,
+    stop = trigger.all{trigger.elapsed(P.min_rest_time),
+                       trigger.any{trigger.at_rest(P.rest_speed), trigger.steady(tops, "top", P.rest_window, P.slump_tolerance)}},
+  })
+  settle_time = settle.duration
   struck = sim:remove_if(function(i, x, y, z, r) return z + r > H end)
   if poured then
     pour.check_full("slump", struck, H)
     pour.remove_hopper(sim, poured)
   end
-  mass = util.total_mass(sim, P.mud_density)
 end
 local particles = sim:count()
 -- The fill as the lift starts: solid fraction in the cone (the bulk density of the simulated mud is
 -- this times the particle density) and the structure of its core, a random packing or a crystal
 -- (which no mud is; lib/fill_structure.lua).
 local fill_solid, structure = fill_structure.measure_fill("slump", sim, cone_region, d)
-local function measure_slump()
-  return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
-end
 local initial = measure_slump()
 
--- 2.–3. Lift and come to rest.
+-- 2. Lift the cone at lift_speed until its bottom edge is `clearance` above the pile under it.
+-- 3. Run until the pile is at rest (RMS speed below rest_speed, or the slump steady within
+-- slump_tolerance over rest_window), at least min_rest_time after the lift stopped, or max_time.
 local t_lift = sim:time()
-local lift_stop, rest_time, at_rest, rest_criterion = nil, nil, false, nil
-local history = {}
-local carried  -- mud moving up with the cone as the lift stops (or at the end, if it never stops)
+local lift_stop  -- absolute time the lift stopped (cone = none: the release, at once)
+local carried    -- mud moving up with the cone as the lift stops (or at the end, if it never stops)
+local function cone_bottom(t) return P.lift_speed * ((lift_stop or t) - t_lift) end
 local function measure_carried(cone_z)
   return observables.carried_by_cone(sim, {lift_speed = P.lift_speed, z_bottom = cone_z, radius_bottom = R_bottom,
                                            radius_top = R_top, height = H, density = P.mud_density})
@@ -189,52 +190,48 @@ if cone then
 else
   lift_stop = t_lift
 end
-local function sample(s)
+-- Slump history, sampled every history_interval; the spread as the final measurement reads it
+-- (image + circle fit; milliseconds per sample).
+local history = sampler.new{
+  {"t", function(s) return s:time() - t_lift end},
+  {"slump_mm", function() return measure_slump().slump * 1000 end},
+  {"slump_flow_mm", function() return sim:measure_slump_flow{axis = {0, 0}, base_z = 0, pixel = P.pixel}.diameter_fit * 1000 end},
+  {"rms_speed", function(s) return util.rms_speed(s) end},
+  {"cone_bottom_mm", function(s) return cone and cone_bottom(s:time()) * 1000 or nil end},
+}
+local cone_cleared = trigger.named("cone_cleared", function(s)
+  return cone_bottom(s:time()) > top_under_cone(true) + P.clearance
+end)
+local function stop_lift(s)
   local t = s:time()
-  local v = util.rms_speed(s, mass)
-  local cone_z = cone and P.lift_speed * ((lift_stop or t) - t_lift) or nil
-  -- The spread as the final measurement reads it (image + circle fit; milliseconds per sample).
-  local spread = sim:measure_slump_flow{axis = {0, 0}, base_z = 0, pixel = P.pixel}
-  history[#history + 1] = {t = t - t_lift, slump_mm = measure_slump().slump * 1000,
-                           slump_flow_mm = spread.diameter_fit * 1000, rms_speed = v,
-                           cone_bottom_mm = cone_z and cone_z * 1000 or nil}
-  if not lift_stop then
-    if cone_z > top_under_cone(true) + P.clearance then
-      carried = measure_carried(cone_z)
-      sim:set_motion(cone, {type = "fixed"})
-      lift_stop = t
-      io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm\n", t - t_lift, cone_z * 1000))
-    end
-    return true
-  end
-  -- Slump steady over the last rest_window seconds (the operator would read the ruler now)?
-  local steady = false
-  if P.slump_tolerance > 0 and t - lift_stop >= P.rest_window then
-    local lo, hi, span = math.huge, -math.huge, 0
-    for k = #history, 1, -1 do
-      local h = history[k]
-      if h.t < t - t_lift - P.rest_window - 1e-9 then break end
-      lo, hi = math.min(lo, h.slump_mm), math.max(hi, h.slump_mm)
-      span = t - t_lift - h.t
-    end
-    steady = span >= P.rest_window - 1e-9 and (hi - lo) / 1000 <= P.slump_tolerance
-  end
-  if t - lift_stop >= P.min_rest_time and (v < P.rest_speed or steady) then
-    at_rest = true
-    rest_time = t - t_lift
-    rest_criterion = v < P.rest_speed and "kinetic_energy" or "slump_steady"
-    return false
-  end
-  return true
+  carried = measure_carried(cone_bottom(t))
+  sim:set_motion(cone, {type = "fixed"})
+  lift_stop = t
+  io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm\n", t - t_lift, cone_bottom(t) * 1000))
 end
-sample(sim)
-sim:run{duration = P.max_time, every = P.history_interval, snapshot_every = snapshot_every,
-        record_loads_every = cone and P.load_interval or nil, record_loads = cone and {cone} or nil,
-        progress = P.progress, callback = sample}
+local function since_lift_stop() return lift_stop end
+local at_rest_after_lift = trigger.all{
+  trigger.elapsed(P.min_rest_time, since_lift_stop),
+  trigger.any{
+    trigger.below(history, "rms_speed", P.rest_speed, "kinetic_energy"),
+    trigger.all{trigger.elapsed(P.rest_window, since_lift_stop),  -- the operator would read the ruler now
+                trigger.steady(history, "slump_mm", P.rest_window, P.slump_tolerance * 1000, "slump_steady")},
+  },
+}
+history:record(sim)
+local lift_and_rest = phase.run(sim, {
+  duration = P.max_time, every = P.history_interval, snapshot_every = snapshot_every, progress = P.progress,
+  record_loads_every = cone and P.load_interval or nil, record_loads = cone and {cone} or nil,
+  sample = history,
+  events = cone and {{when = cone_cleared, act = stop_lift}} or nil,
+  stop = at_rest_after_lift,
+})
+local at_rest, rest_criterion = lift_and_rest.stopped_by ~= nil, lift_and_rest.stopped_by
+local rest_time = at_rest and history:last().t or nil
 if cone and not carried then carried = measure_carried(P.lift_speed * (sim:time() - t_lift)) end
 if not at_rest then
   io.stderr:write(string.format("warning: slump: the pile is not at rest after max_time = %g s (RMS speed %.3g m/s)%s\n",
-                                P.max_time, util.rms_speed(sim, mass),
+                                P.max_time, util.rms_speed(sim),
                                 (cone and not lift_stop) and "; the lift never stopped: a sphere under the cone kept "
                                 .. "rising with it (wedged in the cone); see slump_history for whether the pile was steady" or ""))
 end
@@ -250,7 +247,7 @@ local flow = sim:measure_slump_flow{
 local profile = sim:measure_profile{axis = {0, 0}, base_z = 0, largest_cluster = true}
 -- Observables on fixed grids (the same in every run; lib/slump_observables.lua).
 local profile_grid = observables.profile(sim)
-local history_grid = observables.history_at(history, observables.HISTORY_TIMES)
+local history_grid = observables.history_at(history.rows, observables.HISTORY_TIMES)
 local cone_force = cone and observables.cone_force(sim:wall_load_history(cone), t_lift, lift_stop or sim:time())
                    or {mean = 0, peak = 0, samples = 0}
 local profile_out = {}
@@ -263,44 +260,42 @@ local pictures = {top_view = flow.png, top_view_pgm = flow.pgm}
 if P.pictures then
   local xs, _, zs = sim:xyz()
   local radii = sim:radii()
-  local rows = {}
+  local rows, prof = {}, {}
   for i = 1, #xs do rows[i] = {xs[i] * 1000, zs[i] * 1000, radii[i] * 1000} end
-  util.write_columns("side_view.dat", "x_mm z_mm r_mm (all particles, projected on x-z)", rows)
-  local prof = {}
-  for k, b in ipairs(profile) do
-    prof[#prof + 1] = {b.r * 1000, b.h * 1000}
-  end
-  util.write_columns("profile.dat", "r_mm h_mm", prof)
-  pictures.side_view = util.gnuplot("side_view", string.format([[
-set title 'Slump test: final pile, side view (slump %.0f mm, slump-flow %.0f mm)'
-set xlabel 'x [mm]'; set ylabel 'z [mm]'; set size ratio -1; set grid
-set xrange [-%g:%g]; set yrange [0:%g]
-plot '%s' using 1:2:3 with circles fill solid 0.5 noborder lc rgb '#8b5a2b' title 'particles', \
-     '%s' using 1:2 with lines lw 2 lc rgb 'blue' title 'profile h(r)', \
-     '%s' using (-$1):2 with lines lw 2 lc rgb 'blue' notitle, \
-     '-' using 1:2 with lines dt 2 lc rgb 'black' title 'cone (initial)'
--%g 0
--%g %g
-%g %g
-%g 0
-e]], final.slump * 1000, flow.diameter_fit * 1000, math.max(300, flow.diameter_fit * 600), math.max(300, flow.diameter_fit * 600),
-     H * 1000 * 1.1, util.out("side_view.dat"), util.out("profile.dat"), util.out("profile.dat"),
-     R_bottom * 1000, R_top * 1000, H * 1000, R_top * 1000, H * 1000, R_bottom * 1000))
-  local hist = {}
-  for k, h in ipairs(history) do hist[k] = {h.t, h.slump_mm, h.cone_bottom_mm or 0, h.slump_flow_mm} end
-  util.write_columns("slump_history.dat", "t_s slump_mm cone_bottom_mm slump_flow_mm", hist)
-  local dat = util.out("slump_history.dat")
-  pictures.slump_history = util.gnuplot("slump_history", string.format([[
-set title 'Slump and slump-flow against time (t = 0: start of the lift)'
-set xlabel 't [s]'; set ylabel '[mm]'; set grid; set key outside right
-%s
-plot '%s' using 1:2 with linespoints pt 7 ps 0.5 lc rgb '#1f77b4' title 'slump', \
-     '%s' using 1:4 with linespoints pt 5 ps 0.4 lc rgb '#8b5a2b' title 'slump-flow (circle fit)', \
-     '%s' using 1:3 with lines dt 2 lc rgb 'black' title 'cone bottom above the plate', \
-     231 with lines lc rgb '#1f77b4' dt 3 title 'measured slump 231 mm', \
-     480 with lines lc rgb '#8b5a2b' dt 3 title 'measured slump-flow 480 mm']],
-    lift_stop and string.format("set arrow from %g, graph 0 to %g, graph 1 nohead lc rgb 'gray'", lift_stop - t_lift, lift_stop - t_lift) or "",
-    dat, dat, dat))
+  for k, b in ipairs(profile) do prof[k] = {b.r * 1000, b.h * 1000} end
+  local particles_dat = util.write_columns("side_view.dat", "x_mm z_mm r_mm (all particles, projected on x-z)", rows)
+  local profile_dat = util.write_columns("profile.dat", "r_mm h_mm", prof)
+  local half_width = math.max(300, flow.diameter_fit * 600)
+  pictures.side_view = chart.plot("side_view", {
+    title = string.format("Slump test: final pile, side view (slump %.0f mm, slump-flow %.0f mm)",
+                          final.slump * 1000, flow.diameter_fit * 1000),
+    xlabel = "x [mm]", ylabel = "z [mm]",
+    settings = {"set size ratio -1", string.format("set xrange [-%g:%g]; set yrange [0:%g]", half_width, half_width, H * 1000 * 1.1)},
+    series = {
+      {file = particles_dat, using = "1:2:3", with = "circles fill solid 0.5 noborder lc rgb '#8b5a2b'", title = "particles"},
+      {file = profile_dat, using = "1:2", with = "lines lw 2 lc rgb 'blue'", title = "profile h(r)"},
+      {file = profile_dat, using = "(-$1):2", with = "lines lw 2 lc rgb 'blue'"},
+      {rows = {{-R_bottom * 1000, 0}, {-R_top * 1000, H * 1000}, {R_top * 1000, H * 1000}, {R_bottom * 1000, 0}},
+       using = "1:2", with = "lines dt 2 lc rgb 'black'", title = "cone (initial)"},
+    },
+  })
+  local dat = history:write("slump_history.dat", "t_s slump_mm cone_bottom_mm slump_flow_mm",
+                            {"t", "slump_mm", "cone_bottom_mm", "slump_flow_mm"}, 0)
+  pictures.slump_history = chart.plot("slump_history", {
+    title = "Slump and slump-flow against time (t = 0: start of the lift)", xlabel = "t [s]", ylabel = "[mm]",
+    settings = {"set key outside right",
+                lift_stop and string.format("set arrow from %g, graph 0 to %g, graph 1 nohead lc rgb 'gray'",
+                                            lift_stop - t_lift, lift_stop - t_lift) or nil},
+    series = {
+      {file = dat, using = "1:2", with = "linespoints pt 7 ps 0.5 lc rgb '#1f77b4'", title = "slump"},
+      {file = dat, using = "1:4", with = "linespoints pt 5 ps 0.4 lc rgb '#8b5a2b'", title = "slump-flow (circle fit)"},
+      {file = dat, using = "1:3", with = "lines dt 2 lc rgb 'black'", title = "cone bottom above the plate"},
+      {expr = string.format("%g", measured.slump_mm), with = "lines lc rgb '#1f77b4' dt 3",
+       title = string.format("measured slump %g mm", measured.slump_mm)},
+      {expr = string.format("%g", measured.slump_flow_mm), with = "lines lc rgb '#8b5a2b' dt 3",
+       title = string.format("measured slump-flow %g mm", measured.slump_flow_mm)},
+    },
+  })
 end
 
 local reference_params = {}
@@ -321,7 +316,7 @@ paddy.result{
   pile_particles = final.cluster, loose_particles = final.ignored,
   initial_slump_mm = initial.slump * 1000,
   profile = profile_out,
-  history = history,
+  history = history.rows,
   profile_mm = profile_grid.h_mm,                  -- h(r) at profile_radii_mm (fixed grid)
   profile_radii_mm = profile_grid.radii_mm,
   history_mm = history_grid,                       -- slump at history_times_s after the lift starts
@@ -329,7 +324,7 @@ paddy.result{
   cone_force_N = {mean = cone_force.mean, peak = cone_force.peak, samples = cone_force.samples},  -- downward, during the lift
   mass_on_cone_g = carried and carried.mass_g or 0,  -- mud moving up with the cone as the lift stops
   particles_on_cone = carried and carried.count or 0,
-  measured = {slump_mm = 231, slump_flow_mm = 480},
+  measured = {slump_mm = measured.slump_mm, slump_flow_mm = measured.slump_flow_mm},
   at_rest = at_rest,
   rest_time_s = rest_time,
   rest_criterion = rest_criterion,
@@ -353,11 +348,11 @@ paddy.result{
 
 -- What the user sees on stdout at the end: both responses against the measurement, and where the
 -- results and pictures are.
-local function versus(v, m) return string.format("measured %d mm, %+.1f %%", m, 100 * (v - m) / m) end
+local function versus(v, m) return string.format("measured %g mm, %+.1f %%", m, 100 * (v - m) / m) end
 print("model       " .. mud.describe(P))
-print(string.format("slump       %6.1f mm   (%s)", final.slump * 1000, versus(final.slump * 1000, 231)))
+print(string.format("slump       %6.1f mm   (%s)", final.slump * 1000, versus(final.slump * 1000, measured.slump_mm)))
 print(string.format("slump-flow  %6.1f mm   circle fit; ruler %.1f mm   (%s)", flow.diameter_fit * 1000,
-                    flow.ruler.mean * 1000, versus(flow.diameter_fit * 1000, 480)))
+                    flow.ruler.mean * 1000, versus(flow.diameter_fit * 1000, measured.slump_flow_mm)))
 if not at_rest then print("            (the pile was not at rest at max_time: see the warning above)") end
 util.print_outputs(pictures, {"side_view", "top_view", "slump_history"})
 if snapshot_every then print("ParaView    " .. util.out("snapshots/particles.xmf")) end

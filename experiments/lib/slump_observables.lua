@@ -8,6 +8,8 @@
 --   local s = obs.history_at(history, obs.HISTORY_TIMES) --> slump [mm] at each time
 --   local f = obs.cone_force(sim:wall_load_history(cone), t_lift, t_stop) --> {mean =, peak =, samples =}
 --   local m = obs.carried_by_cone(sim, {...})          --> {mass_g =, count =}
+local sampler = require("lib.sampler")
+
 local M = {}
 
 -- Profile: bins of PROFILE_BIN from the axis to PROFILE_R_MAX (12 bins, centres 12.5 ... 287.5 mm);
@@ -29,24 +31,11 @@ function M.profile(sim)
   return {radii_mm = radii, h_mm = h}
 end
 
--- Linear interpolation of history[k].slump_mm (history[k].t ascending) at each of `times`;
--- before the first sample the first value, after the last the last.
+-- Slump [mm] of history rows ({t =, slump_mm =}, t ascending) at each of `times`, linearly
+-- interpolated (lib/sampler.lua); before the first sample the first value, after the last the last.
 function M.history_at(history, times)
   assert(#history > 0, "slump_observables.history_at: empty history")
-  local out, k = {}, 1
-  for i, t in ipairs(times) do
-    while k < #history and history[k + 1].t <= t do k = k + 1 end
-    local a, b = history[k], history[k + 1]
-    if t <= history[1].t then
-      out[i] = history[1].slump_mm
-    elseif not b then
-      out[i] = a.slump_mm
-    else
-      local w = (t - a.t) / (b.t - a.t)
-      out[i] = a.slump_mm + w * (b.slump_mm - a.slump_mm)
-    end
-  end
-  return out
+  return sampler.interpolate(history, "slump_mm", times)
 end
 
 -- Vertical force of the mud on the cone, positive downward (the mud holds the cone back), over

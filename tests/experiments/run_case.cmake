@@ -40,7 +40,7 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
-elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions)$")
+elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases)$")
   # Library checks written in Lua (tests/experiments/<case>.lua): each raises an error on a wrong
   # answer and writes ok = true at the end.
   run_paddy(code se run ${HERE}/${CASE}.lua --out out --threads 1)
