@@ -1,6 +1,6 @@
 # Helpers shared by the end-to-end test drivers (tests/experiments/run_case.cmake,
-# tests/discovery/run_discovery.cmake): run the paddy executable in ${WORK}, check its exit code,
-# read result.json, compare numbers. Expects PADDY and WORK to be set by the driver's caller.
+# tests/discovery/run_discovery.cmake, tests/lua/cli/mesh_case.cmake): run the paddy executable
+# in ${WORK}, check its exit code and messages, read result.json, compare numbers. Expects PADDY and WORK to be set by the driver's caller.
 
 # run_paddy(<code var> <stderr var> args...): runs ${PADDY} args in ${WORK}; also sets
 # LAST_STDOUT and LAST_STDERR in the caller's scope.
@@ -32,6 +32,13 @@ function(result_json op dir var)
     message(FATAL_ERROR "${dir}/result.json: results ${ARGN}: ${err}")
   endif()
   set(${var} "${value}" PARENT_SCOPE)
+endfunction()
+
+# Fails unless `text` matches the regular expression.
+function(expect_match text regex)
+  if(NOT "${text}" MATCHES "${regex}")
+    message(FATAL_ERROR "output does not match '${regex}'")
+  endif()
 endfunction()
 
 # Compares a floating-point number with a bound: expect_number(<value> GREATER|LESS|EQUAL <bound> <what>).
