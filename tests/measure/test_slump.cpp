@@ -1,4 +1,4 @@
-// Slump height, slump, pile profile and slump history on synthetic piles with known answers.
+// Slump height, slump and pile profile on synthetic piles with known answers.
 #include "synthetic_piles.hpp"
 
 #include <paddy/errors.hpp>
@@ -104,20 +104,6 @@ TEST_CASE("measure: connected clusters", "[measure][slump]") {
   CHECK(c.size[static_cast<std::size_t>(c.largest)] == 3);
   c = connectedClusters(x, rad, 2e-4);
   CHECK(c.size.size() == 2);
-}
-
-TEST_CASE("measure: slump history bookkeeping", "[measure][slump]") {
-  SlumpHistory h;
-  CHECK_FALSE(h.settled(0.5, 1e-3));
-  for (int k = 0; k <= 40; ++k) {
-    const double t = 0.05 * k;
-    h.add(t, 0.231 * (1 - std::exp(-t / 0.2)));
-  }
-  CHECK(h.size() == 41);
-  CHECK(h.last() == Approx(0.231).epsilon(1e-3));
-  CHECK(h.settled(0.5, 1e-3));
-  CHECK_FALSE(h.settled(1.5, 1e-3));
-  CHECK_THROWS_AS(h.add(0.0, 0.1), InputError);
 }
 
 TEST_CASE("measure: slump measures reject bad input", "[measure][slump]") {

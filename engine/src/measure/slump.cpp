@@ -1,4 +1,4 @@
-// Slump (cone height − pile height), the pile profile h(r) and the slump history.
+// Slump (cone height − pile height) and the pile profile h(r).
 // Definitions in paddy/measure/slump.hpp and docs/measurement.md.
 #include <paddy/errors.hpp>
 #include <paddy/measure/clusters.hpp>
@@ -136,31 +136,6 @@ std::vector<ProfileBin> pileProfile(const std::vector<Vec3>& x, const std::vecto
     bins[b].height = quantile(cell_top[b], o.cell_quantile);
   }
   return bins;
-}
-
-void SlumpHistory::add(double t, double s) {
-  checkFinite("SlumpHistory: time", t);
-  checkFinite("SlumpHistory: slump", s);
-  if (!time.empty() && t < time.back())
-    throw InputError("SlumpHistory: time " + std::to_string(t) + " s is before the last sample " +
-                     std::to_string(time.back()) + " s");
-  time.push_back(t);
-  slump.push_back(s);
-}
-
-double SlumpHistory::last() const {
-  if (slump.empty()) throw InputError("SlumpHistory: no samples");
-  return slump.back();
-}
-
-bool SlumpHistory::settled(double window, double tolerance) const {
-  if (time.empty() || time.back() - time.front() < window) return false;
-  double lo = slump.back(), hi = slump.back();
-  for (std::size_t k = time.size(); k-- > 0 && time[k] >= time.back() - window;) {
-    lo = std::min(lo, slump[k]);
-    hi = std::max(hi, slump[k]);
-  }
-  return hi - lo <= tolerance;
 }
 
 }  // namespace paddy::measure

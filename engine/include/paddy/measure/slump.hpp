@@ -71,19 +71,4 @@ std::vector<ProfileBin> pileProfile(const std::vector<Vec3>& positions,
                                     const std::vector<double>& radii,
                                     const ProfileOptions& options = {});
 
-// Slump against time, recorded by the experiment while the cone is lifted and the pile settles.
-struct SlumpHistory {
-  std::vector<double> time;   // [s]
-  std::vector<double> slump;  // [m]
-
-  // Appends a sample; time must not go backwards (InputError otherwise).
-  void add(double t, double s);
-  std::size_t size() const { return time.size(); }
-  bool empty() const { return time.empty(); }
-  double last() const;  // latest slump; InputError if empty
-  // True when the samples of the last `window` seconds span at least `window` and vary by no
-  // more than `tolerance` (max − min) [m].
-  bool settled(double window, double tolerance) const;
-};
-
 }  // namespace paddy::measure
