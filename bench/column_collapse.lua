@@ -38,7 +38,7 @@ local s     = 1.02 * d       -- lattice spacing [m]
 local m     = math.floor((P.n / 2) ^ (1 / 3) + 0.5)
 local nz    = math.floor(P.n / (m * m) + 0.5)
 
--- Skin: Paddy's `skin` is a fraction of the largest radius (engine/src/core/integrator.cpp),
+-- Skin: Paddy's `skin` is a fraction of the largest radius (engine/core/src/integrator.cpp),
 -- so 0.4 gives 0.4 R = 0.4 mm like `neighbor 0.0004 bin` in LAMMPS/LIGGGHTS.
 -- threads: taken from --threads by default (paddy.simulation's `threads` option).
 local sim = paddy.simulation{gravity = {0, 0, -9.81}, skin = 0.4}

@@ -11,7 +11,7 @@
 
 #ifdef PADDY_HAVE_DOE
 #include <paddy/doe/cli.hpp>
-#include <paddy/doe/lua_doe.hpp>
+#include <paddy/lua/doe.hpp>
 #endif
 
 #include <cstring>

@@ -2,7 +2,7 @@
 // compare_fits, null_thresholds) and the command line (paddy doe diagnose).
 #include "doe_test_util.hpp"
 #include "paddy/doe/cli.hpp"
-#include "paddy/doe/lua_doe.hpp"
+#include <paddy/lua/doe.hpp>
 
 #include <catch2/catch.hpp>
 #include <fstream>

@@ -1,4 +1,4 @@
-#include "paddy/doe/lua_doe.hpp"
+#include <paddy/lua/doe.hpp>
 
 #include <catch2/catch.hpp>
 #include <lua.hpp>

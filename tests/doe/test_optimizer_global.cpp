@@ -4,7 +4,7 @@
 // its convergence tolerance); the grid point nearest the optimiser's point must be as good as the
 // grid's best up to the change of D over one grid step per coordinate.
 #include "paddy/doe/box_behnken.hpp"
-#include "paddy/doe/lua_doe.hpp"
+#include <paddy/lua/doe.hpp>
 #include "paddy/doe/optimizer.hpp"
 #include "paddy/doe/regression.hpp"
 

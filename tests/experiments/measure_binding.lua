@@ -1,4 +1,4 @@
--- Test of the measurement bindings (engine/src/lua/lua_measure.cpp) on particle sets with known
+-- Test of the measurement bindings (engine/lua/src/lua_measure.cpp) on particle sets with known
 -- answers; every check raises an error naming what failed (run by run_case.cmake, exit code 0 = pass).
 local measure = require("paddy.measure")
 

@@ -1,5 +1,5 @@
-// Unit tests of sim:fill's packing algorithms (engine/src/lua/packing.hpp).
-#include "lua/packing.hpp"
+// Unit tests of sim:fill's packing algorithms (engine/lua/src/packing.hpp).
+#include "packing.hpp"
 
 #include <paddy/errors.hpp>
 

@@ -137,7 +137,7 @@ TEST_CASE("lua: assignments parse name=value", "[lua]") {
   CHECK_THROWS(paddy::lua::parseAssignment("abc"));
 }
 
-#include "lua/thread_contention.hpp"
+#include "thread_contention.hpp"
 
 TEST_CASE("lua: warning for threads on busy cores", "[lua][threads]") {
   using paddy::lua::contentionWarning;

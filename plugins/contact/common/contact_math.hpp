@@ -5,7 +5,7 @@
 //  * rotateIntoPlane(v, n): turns a history vector (tangential spring, rolling spring) into the
 //    plane normal to the current contact normal n, keeping its length.
 //  * contactLever(R, δ): distance from a centre to the contact point, R − δ/2, the same contact
-//    point the engine uses for the moments of ft (engine/src/core/contact_kernel.hpp).
+//    point the engine uses for the moments of ft (engine/core/src/contact_kernel.hpp).
 #pragma once
 
 #include <paddy/contact_batch.hpp>

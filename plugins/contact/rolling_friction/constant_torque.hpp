@@ -6,7 +6,7 @@
 // F_n = fn_friction (elastic normal force: Hertz F_n, or the repulsive part of JKR);
 // R_i = R_i − δ/2, the distance from the centre to the contact point the engine uses.
 // The model writes the magnitudes μ_r F_n R_i and μ_r F_n R_j into resist_i / resist_j; the
-// integrator applies the sum over a body's contacts implicitly (engine/src/core/integrator.cpp):
+// integrator applies the sum over a body's contacts implicitly (engine/core/src/integrator.cpp):
 // the torque opposes the rotation, can stop it within a step and then holds the body at rest
 // against any other torque up to that sum (the static limit of the law), but never reverses it.
 // Written explicitly (τ from ω̂ of the current step), the torque reverses ω every step near rest

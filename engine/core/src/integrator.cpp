@@ -1,0 +1,207 @@
+// Time loop: velocity Verlet for translation and rotation (spheres), with the neighbour list
+// rebuilt when any particle has moved more than half the skin, and stability guards.
+//
+//   v(t+dt/2) = v(t) + dt/2 · F(t)/m,   x(t+dt) = x(t) + dt · v(t+dt/2),
+//   F(t+dt) from x(t+dt), v(t+dt/2),    v(t+dt) = v(t+dt/2) + dt/2 · F(t+dt)/m   (same for ω, T/I).
+//
+// Resisting torques (ContactBatch::resist_i, summed per body into R = resisting_torque) are the
+// set-valued law T_r = −R ω/|ω| (|T_r| ≤ R at rest). Each rotational half-kick applies it by
+// backward Euler, which for this law is exact and has a closed form:
+//   ω* = ω + h T/I,   ω ← ω* · max(0, 1 − h R / (I |ω*|))      (h = dt/2)
+// The rotation slows by h R/I per half-step and stops at zero instead of reversing, so a body
+// whose other torques stay below R stays at rest exactly. The explicit form ω += h(T − R ω̂)/I
+// reverses ω every step near rest (chatter of amplitude ~ R dt / I) and lets a loaded body creep
+// at a mean rate that grows with dt (docs/physics.md §2.5).
+#include "simulation_impl.hpp"
+
+#include <paddy/errors.hpp>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+
+namespace paddy {
+
+namespace {
+// A contact overlap beyond this fraction of the smaller radius means the step is too large.
+constexpr double kMaxOverlapRatio = 0.5;
+
+// Rotational half-kick with the resisting torque applied implicitly (see the header comment);
+// h_over_i = h / I.
+inline Vec3 kickRotation(const Vec3& omega, const Vec3& torque, double resist, double h_over_i) {
+  Vec3 w = omega + h_over_i * torque;
+  if (resist > 0.0) {
+    const double speed = w.norm(), loss = h_over_i * resist;
+    w = speed > loss ? Vec3(w * (1.0 - loss / speed)) : Vec3::Zero();
+  }
+  return w;
+}
+
+double maxRadius(const ParticleArrays& p) {
+  double r = 0.0;
+  for (double x : p.radius) r = std::max(r, x);
+  return r;
+}
+}  // namespace
+
+void Simulation::Impl::rebuild(Simulation& s) {
+  ParticleArrays& p = s.p_;
+  const double rmax = maxRadius(p);
+  skin = skin_fraction * rmax;
+  if (sort_interval > 0 && s.list_builds_ % static_cast<std::size_t>(sort_interval) == 0) sortSpatially(s);
+  list.build(p, prev_index, skin, history_stride, laws, law_index, s.materials_, s.threads_);
+  std::iota(prev_index.begin(), prev_index.end(), std::size_t{0});
+  wall_max_gap = 0.0;
+  for (const auto& law : laws) wall_max_gap = std::max(wall_max_gap, law.maxSeparation(rmax));
+  if (!s.walls_.empty()) {
+    const double sep = wall_max_gap;
+    ParticleView view{p.size(), p.position.data(), p.radius.data()};
+    for (auto& w : s.walls_) {
+      w->buildCandidates(view, rmax + sep + skin);
+      w->markListBuilt();
+    }
+  }
+  list_valid = true;
+  list_build_time = s.time_;
+  ++s.list_builds_;
+}
+
+void Simulation::Impl::sortSpatially(Simulation& s) {
+  ParticleArrays& p = s.p_;
+  const std::size_t n = p.size();
+  if (n < 2) return;
+  CellGrid grid;
+  grid.build(p.position, std::max(list.cell_size, 2.0 * maxRadius(p)));
+  const std::vector<std::uint32_t>& perm = grid.order;  // new index k ← old index perm[k]
+  auto permute = [&](auto& v) {
+    using V = std::decay_t<decltype(v)>;
+    V out(v.size());
+    for (std::size_t k = 0; k < n; ++k) out[k] = v[perm[k]];
+    v.swap(out);
+  };
+  permute(p.id);
+  permute(p.material);
+  permute(p.radius);
+  permute(p.mass);
+  permute(p.inertia);
+  permute(p.position);
+  permute(p.velocity);
+  permute(p.omega);
+  permute(p.force);
+  permute(p.torque);
+  permute(p.resisting_torque);
+  permute(prev_index);
+}
+
+void Simulation::Impl::predictVelocities(Simulation& s) {
+  ParticleArrays& p = s.p_;
+  const std::size_t n = p.size();
+  if (!predict_velocities) {
+    v_eval.clear();
+    w_eval.clear();
+    return;
+  }
+  v_eval.resize(n);
+  w_eval.resize(n);
+  const double half = 0.5 * s.dt_;
+#pragma omp parallel for schedule(static) num_threads(s.threads_)
+  for (std::size_t i = 0; i < n; ++i) {
+    v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
+    w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
+  }
+}
+
+namespace {
+void checkTimeStep(Simulation& s, double dt, bool explicit_dt) {
+  if (s.particles().size() == 0) return;
+  if (explicit_dt && dt > s.maxStableTimeStep()) {
+    std::ostringstream msg;
+    msg << "time step " << dt << " s is above the stable limit " << s.maxStableTimeStep()
+        << " s for the particles now present (smaller particles were added after the step was set)";
+    throw InputError(msg.str());
+  }
+}
+}  // namespace
+
+void Simulation::step(std::uint64_t n) {
+  if (!impl_->dt_explicit) {
+    if (p_.size() == 0 && dt_ <= 0.0) throw InputError("no time step: add particles or set the time step explicitly");
+    if (p_.size() > 0) dt_ = impl_->dt_fraction * rayleighTime();
+  }
+  checkTimeStep(*this, dt_, impl_->dt_explicit);
+  Impl& m = *impl_;
+  if (!m.list_valid) m.rebuild(*this);
+  if (!m.forces_valid) {
+    for (auto& w : walls_) w->moveTo(time_);
+    m.computeForces(*this, Impl::ForcePass::Initial);
+    if (m.max_overlap_ratio > kMaxOverlapRatio) {
+      std::ostringstream msg;
+      msg << "particles overlap by " << 100.0 * m.max_overlap_ratio
+          << " % of their radius before the step at t = " << time_
+          << " s; they were created overlapping (check the packing or the radii)";
+      throw InstabilityError(msg.str());
+    }
+  }
+  const double dt = dt_;
+  const double half = 0.5 * dt;
+  const std::size_t np = p_.size();
+  for (std::uint64_t s = 0; s < n; ++s) {
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::size_t i = 0; i < np; ++i) {
+      p_.velocity[i] += (half / p_.mass[i]) * p_.force[i];
+      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], half / p_.inertia[i]);
+      p_.position[i] += dt * p_.velocity[i];
+    }
+    time_ += dt;
+    ++steps_;
+    for (auto& w : walls_) w->moveTo(time_);
+
+    const double disp = m.list.maxDisplacement(p_, threads_);
+    if (!std::isfinite(disp)) {
+      std::ostringstream msg;
+      msg << "a particle position became NaN or infinite at t = " << time_ << " s (step " << steps_
+          << "); the time step " << dt << " s is too large or a contact parameter is unphysical";
+      throw InstabilityError(msg.str());
+    }
+    double wall_disp = 0.0;
+    for (const auto& w : walls_) wall_disp = std::max(wall_disp, w->displacementSinceListBuild());
+    if (2.0 * disp > m.skin || disp + wall_disp > m.skin) m.rebuild(*this);
+
+    m.predictVelocities(*this);
+    m.computeForces(*this, Impl::ForcePass::Step);
+    if (m.max_overlap_ratio > kMaxOverlapRatio) {
+      std::ostringstream msg;
+      msg << "contact overlap reached " << 100.0 * m.max_overlap_ratio << " % of the particle radius at t = "
+          << time_ << " s (step " << steps_ << "): the time step " << dt << " s ("
+          << dt / rayleighTime() << " x Rayleigh time) is too large for these velocities; reduce it";
+      throw InstabilityError(msg.str());
+    }
+#pragma omp parallel for schedule(static) num_threads(threads_)
+    for (std::size_t i = 0; i < np; ++i) {
+      p_.velocity[i] += (half / p_.mass[i]) * p_.force[i];
+      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], half / p_.inertia[i]);
+    }
+  }
+}
+
+std::uint64_t Simulation::run(double duration, const std::function<bool(Simulation&)>& callback, double interval) {
+  if (!(duration >= 0.0) || !std::isfinite(duration)) throw InputError("run: duration must be >= 0 seconds");
+  step(0);  // resolves the time step and initial forces
+  const auto total = static_cast<std::uint64_t>(std::ceil(duration / dt_ - 1e-9));
+  std::uint64_t every = total;
+  if (callback && interval > 0.0) every = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::llround(interval / dt_)));
+  if (every == 0) every = 1;
+  std::uint64_t done = 0;
+  while (done < total) {
+    const std::uint64_t chunk = std::min(every, total - done);
+    step(chunk);
+    done += chunk;
+    if (callback && !callback(*this)) break;
+  }
+  return done;
+}
+
+}  // namespace paddy

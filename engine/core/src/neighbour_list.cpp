@@ -1,0 +1,198 @@
+#include "neighbour_list.hpp"
+
+#include <paddy/errors.hpp>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace paddy {
+
+void CellGrid::build(const std::vector<Vec3>& x, double cell_size) {
+  const std::size_t n = x.size();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::max());
+  Vec3 hi = Vec3::Constant(std::numeric_limits<double>::lowest());
+  for (const auto& xi : x) {
+    lo = lo.cwiseMin(xi);
+    hi = hi.cwiseMax(xi);
+  }
+  if (n == 0) lo = hi = Vec3::Zero();
+  size = cell_size;
+  // Keep the grid at most ~8 cells per particle even if a few particles fly far away.
+  const double max_cells = std::max<double>(1000.0, 8.0 * static_cast<double>(n));
+  for (;;) {
+    const Vec3 ext = (hi - lo) / size;
+    const double cells = (std::floor(ext.x()) + 1) * (std::floor(ext.y()) + 1) * (std::floor(ext.z()) + 1);
+    if (cells <= max_cells) break;
+    size *= 1.5;
+  }
+  origin = lo;
+  nx = static_cast<int>((hi.x() - lo.x()) / size) + 1;
+  ny = static_cast<int>((hi.y() - lo.y()) / size) + 1;
+  nz = static_cast<int>((hi.z() - lo.z()) / size) + 1;
+  const std::size_t ncell = static_cast<std::size_t>(nx) * ny * nz;
+  cell_start.assign(ncell + 1, 0);
+  cell_of.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 r = (x[i] - origin) / size;
+    const int ix = std::min(nx - 1, static_cast<int>(r.x()));
+    const int iy = std::min(ny - 1, static_cast<int>(r.y()));
+    const int iz = std::min(nz - 1, static_cast<int>(r.z()));
+    cell_of[i] = static_cast<std::uint32_t>(cellIndex(ix, iy, iz));
+    ++cell_start[cell_of[i] + 1];
+  }
+  for (std::size_t c = 0; c < ncell; ++c) cell_start[c + 1] += cell_start[c];
+  order.resize(n);
+  std::vector<std::size_t> fill(cell_start.begin(), cell_start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+}
+
+void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t>& prev_index, double skin,
+                          std::size_t history_stride, const std::vector<ContactLaw>& laws,
+                          const std::vector<int>& law_index, const std::vector<Material>& materials,
+                          int threads) {
+  const std::size_t n = p.size();
+  const int nmat = static_cast<int>(materials.size());
+  double rmax = 0.0;
+  for (double r : p.radius) rmax = std::max(rmax, r);
+  double sep_max = 0.0;
+  for (const auto& law : laws) sep_max = std::max(sep_max, law.maxSeparation(0.5 * rmax));
+  cell_size = std::max(2.0 * rmax + sep_max + skin, 1e-12);
+
+  CellGrid grid;
+  grid.build(p.position, cell_size);
+
+  // Old list kept for the history carry-over.
+  NeighbourList old;
+  std::swap(old.start, start);
+  std::swap(old.partner_id, partner_id);
+  std::swap(old.history, history);
+  std::swap(old.live, live);
+  const std::size_t old_stride = stride;
+  stride = history_stride;
+
+  std::vector<std::size_t> count(n + 1, 0);
+  struct Entry {
+    std::uint32_t j;
+    std::int32_t law;
+    double range2;
+  };
+  std::vector<std::vector<Entry>> per_thread(static_cast<std::size_t>(threads));
+  std::string missing_pair;
+
+#pragma omp parallel num_threads(threads)
+  {
+    const int t = omp_get_thread_num();
+    const int nt = omp_get_num_threads();
+    const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+    auto& out = per_thread[static_cast<std::size_t>(t)];
+    out.clear();
+    for (std::size_t i = lo; i < hi; ++i) {
+      const Vec3 xi = p.position[i];
+      const double ri = p.radius[i];
+      const std::uint64_t idi = p.id[i];
+      const int c = static_cast<int>(grid.cell_of[i]);
+      const int ix = c % grid.nx, iy = (c / grid.nx) % grid.ny, iz = c / (grid.nx * grid.ny);
+      for (int dz = -1; dz <= 1; ++dz) {
+        const int z = iz + dz;
+        if (z < 0 || z >= grid.nz) continue;
+        for (int dy = -1; dy <= 1; ++dy) {
+          const int y = iy + dy;
+          if (y < 0 || y >= grid.ny) continue;
+          for (int dx = -1; dx <= 1; ++dx) {
+            const int x = ix + dx;
+            if (x < 0 || x >= grid.nx) continue;
+            const int cell = grid.cellIndex(x, y, z);
+            for (std::size_t q = grid.cell_start[cell]; q < grid.cell_start[cell + 1]; ++q) {
+              const std::uint32_t j = grid.order[q];
+              if (p.id[j] <= idi) continue;
+              const double rj = p.radius[j];
+              const double d2 = (xi - p.position[j]).squaredNorm();
+              const double reach_list = ri + rj + sep_max + skin;
+              if (d2 >= reach_list * reach_list) continue;
+              const int law = law_index[static_cast<std::size_t>(p.material[i] * nmat + p.material[j])];
+              if (law < 0) {
+#pragma omp critical(paddy_missing_pair)
+                missing_pair = materials[p.material[i]].name + "' and '" + materials[p.material[j]].name;
+                continue;
+              }
+              const double r_eff = ri * rj / (ri + rj);
+              const double reach = ri + rj + laws[law].maxSeparation(r_eff);
+              const double reach_skin = reach + skin;
+              if (d2 >= reach_skin * reach_skin) continue;
+              out.push_back({j, law, reach * reach});
+              ++count[i + 1];
+            }
+          }
+        }
+      }
+      // Deterministic slot order within an owner: by partner id.
+      const std::size_t m = count[i + 1];
+      std::sort(out.end() - static_cast<std::ptrdiff_t>(m), out.end(),
+                [&](const Entry& a, const Entry& b) { return p.id[a.j] < p.id[b.j]; });
+    }
+  }
+  if (!missing_pair.empty())
+    throw InputError("no interaction is defined between materials '" + missing_pair +
+                     "'; add one with sim:interaction(...)");
+
+  for (std::size_t i = 0; i < n; ++i) count[i + 1] += count[i];
+  start = std::move(count);
+  const std::size_t total = start[n];
+  partner.resize(total);
+  partner_id.resize(total);
+  range2.resize(total);
+  law.resize(total);
+  history.assign(total * stride, 0.0);
+  live.assign(total, 0);
+  {
+    std::size_t k = 0;
+    for (const auto& out : per_thread)
+      for (const auto& e : out) {
+        partner[k] = e.j;
+        partner_id[k] = p.id[e.j];
+        range2[k] = e.range2;
+        law[k] = e.law;
+        ++k;
+      }
+  }
+
+  // Carry the history over from the old list.
+  const bool can_copy = old_stride == stride && stride > 0 && !old.start.empty();
+  if (can_copy) {
+#pragma omp parallel for schedule(static) num_threads(threads)
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::size_t oi = i < prev_index.size() ? prev_index[i] : std::numeric_limits<std::size_t>::max();
+      if (oi == std::numeric_limits<std::size_t>::max() || oi + 1 >= old.start.size()) continue;
+      std::size_t o = old.start[oi];
+      const std::size_t oend = old.start[oi + 1];
+      for (std::size_t k = start[i]; k < start[i + 1]; ++k) {
+        // Both lists are sorted by partner id: merge.
+        while (o < oend && old.partner_id[o] < partner_id[k]) ++o;
+        if (o < oend && old.partner_id[o] == partner_id[k] && old.live[o]) {
+          std::copy_n(&old.history[o * stride], stride, &history[k * stride]);
+          live[k] = 1;
+        }
+      }
+    }
+  }
+  x_at_build = p.position;
+}
+
+double NeighbourList::maxDisplacement(const ParticleArrays& p, int threads) const {
+  const std::size_t n = p.size();
+  if (x_at_build.size() != n) return std::numeric_limits<double>::infinity();
+  double m2 = 0.0;
+  bool bad = false;
+#pragma omp parallel for schedule(static) reduction(max : m2) reduction(|| : bad) num_threads(threads)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d2 = (p.position[i] - x_at_build[i]).squaredNorm();
+    if (!std::isfinite(d2)) bad = true;
+    m2 = std::max(m2, d2);
+  }
+  return bad ? std::numeric_limits<double>::infinity() : std::sqrt(m2);
+}
+
+}  // namespace paddy

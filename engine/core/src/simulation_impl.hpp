@@ -1,0 +1,103 @@
+// Private state of Simulation: contact laws, the neighbour list with contact history, wall
+// contacts, per-thread force buffers. Split over small files in engine/core/src/ by concern:
+//   simulation.cpp (set-up), integrator.cpp (time loop and spatial re-sorting, sortSpatially),
+//   neighbour_list.cpp (search + history carry-over), forces.cpp (particle–particle and
+//   particle–wall force loops, contact_kernel.hpp their shared helpers), wall_forces.cpp (wall
+//   contacts matched to their history), checkpoint.cpp (HDF5 checkpoint / restart).
+#pragma once
+
+#include "contact_law.hpp"
+#include "neighbour_list.hpp"
+
+#include <paddy/simulation.hpp>
+
+#include <cstdint>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace paddy {
+
+// A batch being filled by one thread, and where each of its contacts came from.
+struct BatchWork {
+  ContactBatch batch;
+  std::vector<double> history;            // kCapacity × stride
+  std::uint32_t i[ContactBatch::kCapacity];
+  std::uint32_t j[ContactBatch::kCapacity];  // particle index, or wall contact index for walls
+  double* slot_history[ContactBatch::kCapacity];  // where to write history back (nullptr: none)
+  std::uint8_t* slot_live[ContactBatch::kCapacity];
+  Vec3 point[ContactBatch::kCapacity];       // contact point (walls)
+  int law = -1;
+};
+
+// History of one particle–wall contact, kept sorted by (particle id, wall, key).
+struct WallContactState {
+  std::uint64_t particle_id = 0;
+  std::uint32_t wall = 0;
+  std::uint32_t key = 0;
+};
+
+struct ThreadBuffers {
+  std::vector<Vec3> force, torque;   // per particle (thread 0 uses the main arrays)
+  std::vector<double> resist;        // per particle: resisting-torque magnitudes (same rule)
+  std::vector<ContactRecord> records;
+  double max_overlap_ratio = 0.0;
+  std::uint64_t active_contacts = 0;
+  std::vector<BatchWork> work;       // one per contact law
+};
+
+struct Simulation::Impl {
+  static constexpr std::size_t kNoIndex = std::numeric_limits<std::size_t>::max();
+
+  std::vector<ContactLaw> laws;
+  std::vector<int> law_index;        // [mat_a * n_materials + mat_b] → laws index, -1 = none
+  std::size_t history_stride = 0;
+
+  NeighbourList list;
+  std::vector<std::size_t> prev_index;  // current index → index at the last list build
+  bool list_valid = false;
+  bool forces_valid = false;
+  double skin_fraction = 0.4;
+  double skin = 0.0;
+  double list_build_time = 0.0;
+  double wall_max_gap = 0.0;  // largest gap any law acts at for the largest particle (walls)
+  int sort_interval = 20;
+
+  // walls
+  std::vector<WallContactState> wall_state;  // sorted, matches wall_history blocks
+  std::vector<double> wall_history;
+  std::vector<WallContact> wall_found;       // scratch
+  std::vector<std::uint32_t> wall_of_found;
+
+  std::vector<ThreadBuffers> threads;
+  double dt_fraction = 0.0;   // requested as a fraction of the Rayleigh time (0: explicit dt)
+  bool dt_explicit = false;
+
+  // Velocities at the end of the step, predicted as v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m, used by
+  // velocity-dependent laws (damping) at a step (integrator.cpp).
+  std::vector<Vec3> v_eval, w_eval;
+  bool predict_velocities = true;
+  void predictVelocities(Simulation& s);
+
+  std::vector<ContactRecord> last_records;
+  std::uint64_t active_contacts = 0;
+  double max_overlap_ratio = 0.0;
+
+  // Force evaluation (forces.cpp).
+  //   Step:    forces at the new positions; history advanced over the step just taken.
+  //   Initial: forces of the initial state; history written but not advanced (nothing moved).
+  //   Dry:     evaluate at the current state without advancing or writing any history, and
+  //            collect ContactRecords instead of updating forces.
+  enum class ForcePass { Step, Initial, Dry };
+  void computeForces(Simulation& s, ForcePass pass);
+  // Wall contacts of the current step, matched to their stored history (wall_forces.cpp).
+  void collectWallContacts(Simulation& s, double max_gap, std::vector<double>& history_out);
+  void storeWallHistory(const Simulation& s, const std::vector<double>& history_in);
+  // Rebuild the neighbour list (and wall candidate lists), re-sorting if due (integrator.cpp).
+  void rebuild(Simulation& s);
+  void sortSpatially(Simulation& s);
+  void prepareThreads(std::size_t n_particles, int n_threads);
+};
+
+}  // namespace paddy

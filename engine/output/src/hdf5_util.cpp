@@ -1,0 +1,33 @@
+// HDF5 writing helpers, see hdf5_util.hpp.
+#include "hdf5_util.hpp"
+
+namespace paddy::io::h5 {
+
+void writeDataset(hid_t parent, const std::string& name, hid_t type, std::size_t rows, std::size_t cols,
+                  const void* data) {
+  hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(cols)};
+  Handle space(H5Screate_simple(cols ? 2 : 1, dims, nullptr), H5Sclose, "create dataspace for " + name);
+  Handle set(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
+             "create dataset " + name);
+  if (rows > 0 && H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    throw std::runtime_error("HDF5: cannot write dataset " + name);
+}
+
+namespace {
+void writeScalarAttribute(hid_t object, const std::string& name, hid_t type, const void* value) {
+  Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create dataspace for attribute " + name);
+  Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
+              "create attribute " + name);
+  if (H5Awrite(attr, type, value) < 0) throw std::runtime_error("HDF5: cannot write attribute " + name);
+}
+}  // namespace
+
+void writeAttribute(hid_t object, const std::string& name, double value) {
+  writeScalarAttribute(object, name, H5T_NATIVE_DOUBLE, &value);
+}
+
+void writeAttribute(hid_t object, const std::string& name, std::uint64_t value) {
+  writeScalarAttribute(object, name, H5T_NATIVE_UINT64, &value);
+}
+
+}  // namespace paddy::io::h5

@@ -1,0 +1,36 @@
+// Small RAII and writing helpers over the HDF5 C API (private to engine/output/src).
+#pragma once
+
+#include <hdf5.h>
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace paddy::io::h5 {
+
+// Owns one HDF5 identifier and closes it with the matching H5?close.
+class Handle {
+ public:
+  using Closer = herr_t (*)(hid_t);
+  Handle(hid_t id, Closer close, const std::string& what) : id_(id), close_(close) {
+    if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what);
+  }
+  ~Handle() { if (id_ >= 0) close_(id_); }
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  operator hid_t() const { return id_; }
+
+ private:
+  hid_t id_;
+  Closer close_;
+};
+
+// Writes a 1-D (cols == 0) or 2-D (rows × cols) dataset of `type` from `data`.
+void writeDataset(hid_t parent, const std::string& name, hid_t type, std::size_t rows, std::size_t cols,
+                  const void* data);
+void writeAttribute(hid_t object, const std::string& name, double value);
+void writeAttribute(hid_t object, const std::string& name, std::uint64_t value);
+
+}  // namespace paddy::io::h5

@@ -1,0 +1,112 @@
+// HDF5 snapshot files, see paddy/io/snapshot.hpp.
+#include <paddy/io/atomic_file.hpp>
+#include <paddy/io/snapshot.hpp>
+#include <paddy/simulation.hpp>
+
+#include "hdf5_util.hpp"
+
+#include <cstdio>
+#include <system_error>
+
+namespace paddy::io {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// Copies a Vec3 field into a contiguous N×3 array (Eigen's Vector3d is 3 packed doubles, but
+// copying keeps the file layout independent of the container).
+template <class Range, class Get>
+std::vector<double> flatten3(const Range& items, Get get) {
+  std::vector<double> out;
+  out.reserve(items.size() * 3);
+  for (const auto& item : items) {
+    const Vec3& v = get(item);
+    out.insert(out.end(), {v.x(), v.y(), v.z()});
+  }
+  return out;
+}
+
+void writeParticles(hid_t file, const ParticleArrays& p) {
+  using namespace h5;
+  Handle group(H5Gcreate2(file, "particles", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+               "create group /particles");
+  const std::size_t n = p.size();
+  const auto identity = [](const Vec3& v) -> const Vec3& { return v; };
+  writeDataset(group, "id", H5T_NATIVE_UINT64, n, 0, p.id.data());
+  std::vector<std::int32_t> material(p.material.begin(), p.material.end());
+  writeDataset(group, "material", H5T_NATIVE_INT32, n, 0, material.data());
+  writeDataset(group, "radius", H5T_NATIVE_DOUBLE, n, 0, p.radius.data());
+  writeDataset(group, "position", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.position, identity).data());
+  writeDataset(group, "velocity", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.velocity, identity).data());
+  writeDataset(group, "omega", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.omega, identity).data());
+  writeDataset(group, "force", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.force, identity).data());
+}
+
+void writeContacts(hid_t file, const std::vector<ContactRecord>& c) {
+  using namespace h5;
+  Handle group(H5Gcreate2(file, "contacts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+               "create group /contacts");
+  const std::size_t m = c.size();
+  std::vector<std::uint64_t> id_i(m), id_j(m);
+  std::vector<std::uint8_t> wall(m);
+  std::vector<double> overlap(m), fn(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    id_i[k] = c[k].id_i;
+    id_j[k] = c[k].id_j;
+    wall[k] = c[k].wall ? 1 : 0;
+    overlap[k] = c[k].overlap;
+    fn[k] = c[k].fn;
+  }
+  writeDataset(group, "id_i", H5T_NATIVE_UINT64, m, 0, id_i.data());
+  writeDataset(group, "id_j", H5T_NATIVE_UINT64, m, 0, id_j.data());
+  writeDataset(group, "wall", H5T_NATIVE_UINT8, m, 0, wall.data());
+  writeDataset(group, "overlap", H5T_NATIVE_DOUBLE, m, 0, overlap.data());
+  writeDataset(group, "fn", H5T_NATIVE_DOUBLE, m, 0, fn.data());
+  writeDataset(group, "normal", H5T_NATIVE_DOUBLE, m, 3,
+               flatten3(c, [](const ContactRecord& r) -> const Vec3& { return r.normal; }).data());
+  writeDataset(group, "ft", H5T_NATIVE_DOUBLE, m, 3,
+               flatten3(c, [](const ContactRecord& r) -> const Vec3& { return r.ft; }).data());
+}
+
+}  // namespace
+
+void writeSnapshot(const Simulation& sim, const fs::path& file) {
+  const std::vector<ContactRecord> contacts = sim.contacts();
+  produceFileAtomic(file, [&](const fs::path& tmp) {
+    using namespace h5;
+    try {
+      Handle f(H5Fcreate(tmp.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose,
+               "create file " + tmp.string());
+      writeAttribute(f, "time", sim.time());
+      writeAttribute(f, "step", static_cast<std::uint64_t>(sim.stepCount()));
+      writeParticles(f, sim.particles());
+      writeContacts(f, contacts);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(std::string(e.what()) + " (snapshot " + file.string() + ")");
+    }
+  });
+}
+
+fs::path SnapshotWriter::write(const Simulation& sim) {
+  if (entries_.empty()) {
+    // Stale files from an earlier run in the same directory would confuse readers.
+    std::error_code ec;
+    if (fs::is_directory(dir_, ec)) {
+      for (const auto& entry : fs::directory_iterator(dir_, ec)) {
+        const std::string name = entry.path().filename().string();
+        if ((name.rfind("snap_", 0) == 0 && entry.path().extension() == ".h5") || name == "particles.xmf")
+          fs::remove(entry.path(), ec);
+      }
+    }
+  }
+  char name[32];
+  std::snprintf(name, sizeof name, "snap_%06zu.h5", entries_.size());
+  const fs::path file = dir_ / name;
+  writeSnapshot(sim, file);
+  entries_.push_back({name, sim.time(), sim.particles().size()});
+  writeFileAtomic(dir_ / "particles.xmf", xdmfText(entries_));
+  return file;
+}
+
+}  // namespace paddy::io
