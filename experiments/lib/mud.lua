@@ -42,18 +42,28 @@ M.conventions = {
 M.convention_names = {"paddy", "edem"}
 M.default_conventions = "paddy"
 
--- The calibrated contact parameters and Table 2 intrinsic properties. `law`: the contact
--- sub-model parameter whose declared coarse-graining law (ParamSpec, beside the model) it follows. The contact parameters'
+-- The calibrated contact parameters and Table 2 intrinsic properties. The contact parameters'
 -- declared defaults are the default material set's (conventions paddy, material auto); with
 -- another `material` the set's values replace every contact parameter not given with --set.
 M.contact = {
-  {name = "mud_mud_restitution", law = "restitution", default = 0.13, min = 0.01, max = 1, description = "mud-mud coefficient of restitution (H1)"},
-  {name = "mud_mud_friction", law = "friction", default = 0.15, min = 0, max = 2, description = "mud-mud static friction (H2)"},
-  {name = "mud_mud_rolling_friction", law = "rolling_friction", default = 0.125, min = 0, max = 1, description = "mud-mud rolling friction (H3)"},
-  {name = "mud_steel_restitution", law = "restitution", default = 0.3, min = 0.01, max = 1, description = "mud-steel coefficient of restitution (H4)"},
-  {name = "mud_steel_friction", law = "friction", default = 0.6, min = 0, max = 2, description = "mud-steel static friction (H5)"},
-  {name = "mud_steel_rolling_friction", law = "rolling_friction", default = 0.055, min = 0, max = 1, description = "mud-steel rolling friction (H6)"},
-  {name = "jkr_surface_energy", law = "surface_energy", default = 0.096, unit = "J/m^2", min = 0, max = 10, description = "mud-mud JKR surface energy at 2 mm (H7; scaled when coarse grained)"},
+  {name = "mud_mud_restitution", default = 0.13, min = 0.01, max = 1, description = "mud-mud coefficient of restitution (H1)"},
+  {name = "mud_mud_friction", default = 0.15, min = 0, max = 2, description = "mud-mud static friction (H2)"},
+  {name = "mud_mud_rolling_friction", default = 0.125, min = 0, max = 1, description = "mud-mud rolling friction (H3)"},
+  {name = "mud_steel_restitution", default = 0.3, min = 0.01, max = 1, description = "mud-steel coefficient of restitution (H4)"},
+  {name = "mud_steel_friction", default = 0.6, min = 0, max = 2, description = "mud-steel static friction (H5)"},
+  {name = "mud_steel_rolling_friction", default = 0.055, min = 0, max = 1, description = "mud-steel rolling friction (H6)"},
+  {name = "jkr_surface_energy", default = 0.096, unit = "J/m^2", min = 0, max = 10, description = "mud-mud JKR surface energy at 2 mm (H7; scaled when coarse grained)"},
+}
+-- For each contact parameter, the contact sub-model parameter whose coarse-graining law (declared
+-- in its ParamSpec, beside the model) it follows.
+M.contact_laws = {
+  mud_mud_restitution = "restitution",
+  mud_mud_friction = "friction",
+  mud_mud_rolling_friction = "rolling_friction",
+  mud_steel_restitution = "restitution",
+  mud_steel_friction = "friction",
+  mud_steel_rolling_friction = "rolling_friction",
+  jkr_surface_energy = "surface_energy",
 }
 M.intrinsic = {
   {name = "mud_poisson", default = 0.5, min = 0, max = 0.5, description = "mud Poisson ratio (Table 2)"},
@@ -110,7 +120,7 @@ M.effects = {
    end},
   {name = "lubrication", strength = "lubrication_viscosity", extra = "lubrication", pairs = {"mud_mud", "mud_steel"},
    parameters = {
-     {name = "lubrication_viscosity", default = 0, unit = "Pa s", min = 0, max = 1000, description = "viscosity of the interstitial fluid at 2 mm: squeeze-film force 6 pi mu R*^2 v_n/h and tangential log force (0: off; scaled like the JKR surface energy when coarse grained)"},
+     {name = "lubrication_viscosity", default = 0, unit = "Pa s", min = 0, max = 1000, description = "viscosity of the interstitial fluid at 2 mm: squeeze-film force 6 pi mu R*^2 v_n/h and tangential log force (0: off; water 0.001; resolved by the step up to about 0.02, above it the force saturates at m*/(12 dt); scaled like the JKR surface energy when coarse grained)"},
      {name = "lubrication_min_gap", default = 0.01, unit = "R*", min = 1e-6, max = 1, description = "minimum film thickness (regularisation) as a fraction of R*"},
      {name = "lubrication_cutoff", default = 0.1, unit = "R*", min = 1e-6, max = 1, description = "gap beyond which the film force is 0, as a fraction of R*"},
    },
@@ -133,7 +143,7 @@ M.effects = {
    end},
   {name = "plastic_adhesion", strength = "plastic_adhesion", extra = "plastic_adhesion", pairs = {"mud_mud"},
    parameters = {
-     {name = "plastic_adhesion", default = 0, min = 0, max = 1.5, description = "mud-mud adhesion growing with the largest load a contact carried: pull-off = this x largest load (0: off; Luding 2008, Thakur et al. 2014 EEPA)"},
+     {name = "plastic_adhesion", default = 0, min = 0, max = 0.9, description = "mud-mud adhesion growing with the largest load a contact carried: pull-off = this x largest load (0: off; Luding 2008, Thakur et al. 2014 EEPA)"},
      {name = "plastic_adhesion_range", default = 0.05, unit = "R*", min = 1e-6, max = 0.5, description = "largest bonded gap of the plastic adhesion as a fraction of R* (the range is min(largest overlap, this R*))"},
    },
    reference = function(P)
@@ -183,7 +193,7 @@ function M.coarse_grain(P, d, effects)
   local laws = {particle_diameter = "diameter"}
   for _, e in ipairs(M.contact) do
     ref[e.name] = P[e.name]
-    laws[e.name] = e.law
+    laws[e.name] = M.contact_laws[e.name]
   end
   for _, fx in ipairs(M.active_effects(P, effects)) do
     for name, v in pairs(fx.reference(P)) do
@@ -336,6 +346,16 @@ function M.describe(P)
     v.mud_mud_friction, v.mud_steel_friction, v.mud_mud_rolling_friction, v.mud_steel_rolling_friction,
     v.jkr_surface_energy, #i.given > 0 and ("; given with --set: " .. table.concat(i.given, ", ")) or "",
     P.timestep_fraction, P.timestep_damping and " (shortened below e = 0.13)" or "", i.timestep_from)
+    .. M.describe_effects(P)
+end
+
+-- "; effects: liquid_bridges (liquid_bridge_volume = 0.05), ..." or "" when every effect is off.
+function M.describe_effects(P, effects)
+  local on = {}
+  for _, fx in ipairs(M.active_effects(P, effects)) do
+    on[#on + 1] = string.format("%s (%s = %g)", fx.name, fx.strength, P[fx.strength])
+  end
+  return #on > 0 and ("\n            effects: " .. table.concat(on, ", ")) or ""
 end
 
 -- Particle radius option of sim:fill: monodisperse, or a normal distribution of diameters with

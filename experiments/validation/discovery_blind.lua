@@ -44,10 +44,13 @@ local SETS = {
     outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
   },
   effects = {
+    -- 2 mm values (mud.lua coarse grains them; docs/physics.md §2.7): bridge volume as a fraction
+    -- of the sphere volume; viscosity up to 0.02 Pa s (20 x water), where the film is still
+    -- resolved by the step; wall JKR energy up to 0.3 J/m^2; pull-off up to half the largest load.
     candidates = {{name = "liquid_bridges", parameter = "liquid_bridge_volume", low = 0, high = 0.05},
-                  {name = "lubrication", parameter = "lubrication_viscosity", low = 0, high = 1.0},
+                  {name = "lubrication", parameter = "lubrication_viscosity", low = 0, high = 0.02},
                   {name = "wall_adhesion", parameter = "mud_steel_surface_energy", low = 0, high = 0.3},
-                  {name = "plastic_adhesion", parameter = "plastic_adhesion", low = 0, high = 1.0}},
+                  {name = "plastic_adhesion", parameter = "plastic_adhesion", low = 0, high = 0.5}},
     outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
   },
 }

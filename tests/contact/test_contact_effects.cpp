@@ -3,7 +3,7 @@
 //   liquid bridge:    Willett et al. 2000, F = 2πRγ cosθ/(1 + 1.05ŝ + 2.5ŝ²), ŝ = s sqrt(R/V),
 //                     R = 2R*; rupture (1 + θ/2) V^(1/3) (Lian et al. 1993)
 //   lubrication:      F_n = −6πμR*² v_n/h, F_t = −6πμR* (8/15) ln(R*/h) v_t (Reynolds; Goldman,
-//                     Cox & Brenner 1967), h = max(gap, h_min), coefficients ≤ m*/dt
+//                     Cox & Brenner 1967), h = max(gap, h_min), coefficients ≤ m*/(12 dt)
 //   plastic adhesion: A = λ F_max, F = A in contact, A (1 + δ/s_c) across the bonded gap
 #include "contact_test_util.hpp"
 
@@ -97,7 +97,7 @@ TEST_CASE("contact/liquid_bridge: Willett force between equal spheres and a sphe
   CHECK(lb.stiffnessBound(kR / 2) == Approx((lb.force(kR / 2, 0.0) - lb.force(kR / 2, ds)) / ds).epsilon(1e-4));
 }
 
-TEST_CASE("contact/lubrication: Reynolds normal and log tangential force, regularised and capped at m*/dt",
+TEST_CASE("contact/lubrication: Reynolds normal and log tangential force, regularised and capped at m*/(12 dt)",
           "[contact][effects]") {
   const double mu = 0.5, hmin = 0.01, hcut = 0.1;
   Chain chain;
@@ -131,15 +131,15 @@ TEST_CASE("contact/lubrication: Reynolds normal and log tangential force, regula
   b.vn[0] = 0.01;
   chain.run();
   CHECK(b.fn[0] == Approx(-6.0 * kPi * mu * kR * kR * 0.01 / (0.05 * kR)).epsilon(1e-14));
-  // With a step, each coefficient is at most m*/dt: a large step sees exactly m*/dt.
+  // With a step, each coefficient is at most m*/(12 dt): a large step sees exactly that.
   const double dt = 1.0;
   chain.setup(1, dt);
   setPair(b, 0, 1e-6, kR, kR, m, m);
   b.vn[0] = vn;
   b.vt[0] = vt;
   chain.run();
-  CHECK(b.fn[0] == Approx(-(0.5 * m / dt) * vn).epsilon(1e-14));
-  CHECK(b.ft[0].x() == Approx(-(0.5 * m / dt) * vt.x()).epsilon(1e-14));
+  CHECK(b.fn[0] == Approx(-(0.5 * m / (12.0 * dt)) * vn).epsilon(1e-14));
+  CHECK(b.ft[0].x() == Approx(-(0.5 * m / (12.0 * dt)) * vt.x()).epsilon(1e-14));
 }
 
 TEST_CASE("contact/plastic_adhesion: pull-off grows with the largest load, softens across the bonded gap, breaks at s_c",

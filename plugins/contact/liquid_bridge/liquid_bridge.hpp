@@ -3,7 +3,7 @@
 //
 //   F(s) = 2π R γ_s cos θ / (1 + 1.05 ŝ + 2.5 ŝ²),   ŝ = s sqrt(R / V),   R = 2 R*
 //
-// Willett, Adans, Johnson & Seville (2000), Langmuir 16, 9396: the closed-form fit of the
+// Willett, Adams, Johnson & Seville (2000), Langmuir 16, 9396: the closed-form fit of the
 // capillary force of a bridge of volume V and contact angle θ between equal spheres of radius R at
 // separation s (their "simple expression", written with the full separation s; the bracket is
 // 1 + 2.1 (s/2) sqrt(R/V) + 10 ((s/2) sqrt(R/V))²). Unequal spheres use Willett's harmonic mean

@@ -11,10 +11,14 @@
 // h_min = lubrication_min_gap · R* regularises the 1/h singularity (surface roughness; in contact
 // the film is h_min thick); h_cut = lubrication_cutoff · R* ends the force where the lubrication
 // approximation (h ≪ R*) stops holding. The log is taken ≥ 0.
-// Time step (explicit integration of a dashpot c: stable and non-oscillating for c dt / m* ≤ 1):
-// each coefficient is capped, c ← min(c, m*/dt), so a contact's relative velocity is at most
-// stopped within one step, never reversed. The cap is what keeps h → h_min stable for any step;
-// with dt = 0 (a force evaluation outside a step) no cap applies.
+// Time step: each coefficient is capped, c ← min(c, m*/(z dt)) with z = 12 (the kissing number:
+// the most equal spheres that can touch one). Explicit integration of dashpots is stable when
+// dt λ_max < 2, λ_max the largest eigenvalue of M⁻¹C; by Gershgorin λ_max ≤ Σ_contacts c/m* ≤ z c/m*
+// for a sphere among equal ones (the tensor c_n nn + c_t(I − nn) has norm max(c_n, c_t)), so with
+// the cap dt λ_max ≤ 1: velocities are at most stopped within a step, never reversed, however
+// many films a sphere has. The cap keeps h → h_min stable for any step; where it binds the film
+// is stiffer than the step can resolve and the force is the most the step allows (docs/physics.md
+// says for which μ). With dt = 0 (a force evaluation outside a step) no cap applies.
 // Chain role: a normal-force extra; fn −= c_n v_n, ft −= c_t v_t. It leaves active, fn_friction
 // and the Coulomb cap alone (a viscous force is not a contact load, and not limited by friction).
 // maxSeparation(R*) = h_cut (grows with R*, as the contract requires).
@@ -32,6 +36,8 @@ namespace paddy::contact {
 
 class Lubrication final : public SubModel {
  public:
+  static constexpr double kMaxNeighbours = 12.0;  // z of the cap m*/(z dt)
+
   Lubrication(double viscosity, double min_gap_ratio, double cutoff_ratio)
       : mu_(viscosity), min_gap_(min_gap_ratio), cutoff_(cutoff_ratio) {}
 
@@ -51,7 +57,7 @@ class Lubrication final : public SubModel {
       const double h = std::max(gap, min_gap_ * r);
       double cn = normalCoefficient(r, h), ct = tangentialCoefficient(r, h);
       if (b.dt > 0.0) {
-        const double cap = b.m_eff[k] / b.dt;
+        const double cap = b.m_eff[k] / (kMaxNeighbours * b.dt);
         cn = std::min(cn, cap);
         ct = std::min(ct, cap);
       }

@@ -15,7 +15,7 @@ extern "C" PADDY_PLUGIN_EXPORT int paddy_register_plugin(PluginRegistry* r) {
   r->addSubModel(
       {"lubrication", SubModelKind::Extra,
        "squeeze film F_n = -6 pi mu R*^2 v_n/h, F_t = -6 pi mu R* (8/15) ln(R*/h) v_t, h = max(gap, h_min), "
-       "gap < h_cut; coefficients capped at m*/dt (Reynolds; Goldman, Cox & Brenner 1967)",
+       "gap < h_cut; coefficients capped at m*/(12 dt) (Reynolds; Goldman, Cox & Brenner 1967)",
        {{"lubrication_viscosity", 0.0, 0.0, 1e4, "Pa s", "viscosity mu of the interstitial fluid (0: off)", false, 1.0,
          "force 6 pi mu R*^2 v/h ~ mu alpha at the same velocity and gap ratio; mu ~ alpha makes it ~ alpha^2 like "
          "contact forces at fixed bulk stress (as the JKR surface energy)"},

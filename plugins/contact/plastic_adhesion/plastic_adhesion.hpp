@@ -19,8 +19,11 @@
 // and rolling sub-models. Across the bonded gap it marks the contact active with S_n = A / s_c
 // (the softening slope), so the chain's damping acts there too.
 // Time step: |dF_ad/dδ| = A / s_c ≤ λ F_max / δ_max ≤ λ (2/3) S_n(δ_max) for Hertz (F = 2/3 S_n δ),
-// so for λ ≤ 1.5 the slope stays below the Hertz stiffness the step already resolves; the range
-// of λ is therefore [0, 1.5].
+// so for λ ≤ 1.5 the slope stays below the Hertz stiffness the step already resolves. The range
+// of λ is [0, 0.9]: at λ = 1 an unloaded contact is pulled back to its largest overlap
+// (F_H(δ) = F_max) and never recovers, so contacts ratchet to ever larger overlaps (the 20 mm
+// slump with λ = 1 stopped with an overlap above 50 % of a radius during the pour); λ < 1 leaves
+// an elastic recovery to λ^{2/3} δ_max.
 // maxSeparation(R*) = κ R* when λ > 0.
 // Strength 0 (λ = 0): no history, maxSeparation 0, compute does nothing — bit for bit the chain
 // without it.
