@@ -54,6 +54,17 @@ M.contact = {
   {name = "mud_steel_rolling_friction", default = 0.055, min = 0, max = 1, description = "mud-steel rolling friction (H6)"},
   {name = "jkr_surface_energy", default = 0.096, unit = "J/m^2", min = 0, max = 10, description = "mud-mud JKR surface energy at 2 mm (H7; scaled when coarse grained)"},
 }
+-- For each contact parameter, the contact sub-model parameter whose coarse-graining law (declared
+-- in its ParamSpec, beside the model) it follows.
+M.contact_laws = {
+  mud_mud_restitution = "restitution",
+  mud_mud_friction = "friction",
+  mud_mud_rolling_friction = "rolling_friction",
+  mud_steel_restitution = "restitution",
+  mud_steel_friction = "friction",
+  mud_steel_rolling_friction = "rolling_friction",
+  jkr_surface_energy = "surface_energy",
+}
 M.intrinsic = {
   {name = "mud_poisson", default = 0.5, min = 0, max = 0.5, description = "mud Poisson ratio (Table 2)"},
   {name = "mud_density", default = 1680, unit = "kg/m^3", min = 1, max = 1e5, description = "mud particle density (Table 2)"},
@@ -76,25 +87,121 @@ M.selection = {
    description = "named contact-parameter set (experiments/materials/paddy_mud.json); auto: paddy_calibrated under paddy conventions, reference_edem under edem"},
 }
 
-function M.parameters(own)
+-- Candidate physical effects (docs/physics.md "Physical effects"): each is off at its default 0,
+-- and then the run is exactly the run without it (the effect is not even added to the chain).
+-- A descriptor:
+--   name        what the effect is (discovery's candidate name)
+--   strength    the parameter whose value 0 turns it off
+--   parameters  its declarations (values for 2 mm grains, scaled when coarse grained)
+--   reference(P) → {name = {value at 2 mm, law}}: the values mud.coarse_grain scales, each with the
+--               contact sub-model parameter whose declared law it follows
+--   pairs       which interactions it joins: "mud_mud", "mud_steel"
+--   extra       contact sub-model added to those interactions' extras (optional)
+--   normal      normal sub-model replacing the pair's own (optional)
+--   contact(c, conv) → {sub-model parameter = value} from the scaled values c
+-- An experiment can pass more descriptors to mud.parameters / mud.coarse_grain / mud.setup
+-- (argument `effects`), or append to M.effects before calling them.
+local function sphere_volume(d) return math.pi * d ^ 3 / 6 end
+M.effects = {
+  {name = "liquid_bridges", strength = "liquid_bridge_volume", extra = "liquid_bridge", pairs = {"mud_mud", "mud_steel"},
+   parameters = {
+     {name = "liquid_bridge_volume", default = 0, min = 0, max = 0.2, description = "liquid volume of one capillary bridge as a fraction of the mean sphere volume (0: no bridges; Willett et al. 2000, rupture at (1 + theta/2) V^(1/3), Lian et al. 1993)"},
+     {name = "liquid_surface_tension", default = 0.072, unit = "N/m", min = 0, max = 10, description = "surface tension of the bridging liquid at 2 mm (water 0.072; scaled like the JKR surface energy when coarse grained)"},
+     {name = "liquid_contact_angle", default = 0, unit = "deg", min = 0, max = 90, description = "contact angle of the bridging liquid"},
+   },
+   reference = function(P)
+     return {liquid_bridge_volume_m3 = {P.liquid_bridge_volume * sphere_volume(M.reference_diameter), "bridge_volume"},
+             liquid_surface_tension = {P.liquid_surface_tension, "surface_tension"},
+             liquid_contact_angle = {P.liquid_contact_angle, "contact_angle"}}
+   end,
+   contact = function(c)
+     return {bridge_volume = c.liquid_bridge_volume_m3, surface_tension = c.liquid_surface_tension,
+             contact_angle = c.liquid_contact_angle}
+   end},
+  {name = "lubrication", strength = "lubrication_viscosity", extra = "lubrication", pairs = {"mud_mud", "mud_steel"},
+   parameters = {
+     {name = "lubrication_viscosity", default = 0, unit = "Pa s", min = 0, max = 1000, description = "viscosity of the interstitial fluid at 2 mm: squeeze-film force 6 pi mu R*^2 v_n/h and tangential log force (0: off; water 0.001; resolved by the step up to about 0.02, above it the force saturates at m*/(12 dt); scaled like the JKR surface energy when coarse grained)"},
+     {name = "lubrication_min_gap", default = 0.01, unit = "R*", min = 1e-6, max = 1, description = "minimum film thickness (regularisation) as a fraction of R*"},
+     {name = "lubrication_cutoff", default = 0.1, unit = "R*", min = 1e-6, max = 1, description = "gap beyond which the film force is 0, as a fraction of R*"},
+   },
+   reference = function(P)
+     return {lubrication_viscosity = {P.lubrication_viscosity, "lubrication_viscosity"},
+             lubrication_min_gap = {P.lubrication_min_gap, "lubrication_min_gap"},
+             lubrication_cutoff = {P.lubrication_cutoff, "lubrication_cutoff"}}
+   end,
+   contact = function(c)
+     return {lubrication_viscosity = c.lubrication_viscosity, lubrication_min_gap = c.lubrication_min_gap,
+             lubrication_cutoff = c.lubrication_cutoff}
+   end},
+  {name = "wall_adhesion", strength = "mud_steel_surface_energy", normal = "jkr", pairs = {"mud_steel"},
+   parameters = {
+     {name = "mud_steel_surface_energy", default = 0, unit = "J/m^2", min = 0, max = 10, description = "JKR surface energy of the mud-steel pair (cone, plate, cup, vane) at 2 mm (0: Hertz, as the reference; scaled when coarse grained)"},
+   },
+   reference = function(P) return {mud_steel_surface_energy = {P.mud_steel_surface_energy, "surface_energy"}} end,
+   contact = function(c, conv)
+     return {surface_energy = c.mud_steel_surface_energy, jkr_overlap_stiffness = conv.jkr_overlap_stiffness}
+   end},
+  {name = "plastic_adhesion", strength = "plastic_adhesion", extra = "plastic_adhesion", pairs = {"mud_mud"},
+   parameters = {
+     {name = "plastic_adhesion", default = 0, min = 0, max = 0.9, description = "mud-mud adhesion growing with the largest load a contact carried: pull-off = this x largest load (0: off; Luding 2008, Thakur et al. 2014 EEPA)"},
+     {name = "plastic_adhesion_range", default = 0.05, unit = "R*", min = 1e-6, max = 0.5, description = "largest bonded gap of the plastic adhesion as a fraction of R* (the range is min(largest overlap, this R*))"},
+   },
+   reference = function(P)
+     return {plastic_adhesion = {P.plastic_adhesion, "plastic_adhesion"},
+             plastic_adhesion_range = {P.plastic_adhesion_range, "plastic_adhesion_range"}}
+   end,
+   contact = function(c)
+     return {plastic_adhesion = c.plastic_adhesion, plastic_adhesion_range = c.plastic_adhesion_range}
+   end},
+}
+local function all_effects(more)
+  local list = {}
+  for _, e in ipairs(M.effects) do list[#list + 1] = e end
+  for _, e in ipairs(more or {}) do list[#list + 1] = e end
+  return list
+end
+-- The effects whose strength is > 0 in P (a P without the strength parameter: off).
+function M.active_effects(P, more)
+  local on = {}
+  for _, e in ipairs(all_effects(more)) do
+    local ok, v = pcall(function() return P[e.strength] end)
+    if ok and type(v) == "number" and v > 0 then on[#on + 1] = e end
+  end
+  return on
+end
+
+function M.parameters(own, effects)
   local list = {}
   for _, e in ipairs(own) do list[#list + 1] = e end
   for _, e in ipairs(M.selection) do list[#list + 1] = e end
   for _, e in ipairs(M.contact) do list[#list + 1] = e end
+  for _, fx in ipairs(all_effects(effects)) do
+    for _, e in ipairs(fx.parameters) do list[#list + 1] = e end
+  end
   for _, e in ipairs(M.intrinsic) do list[#list + 1] = e end
   return list
 end
 
--- Coarse graining from the reference 2 mm to diameter d: α = d / 2 mm. The contact parameters
--- follow the laws of paddy::measure::CoarseGraining (docs/measurement.md): only the JKR surface
--- energy changes (γ ∝ α); restitution, friction and rolling friction are dimensionless and the
--- intrinsic properties describe the same material. Returns
+-- Coarse graining from the reference 2 mm to diameter d: α = d / 2 mm. Each contact parameter
+-- follows the law its contact sub-model declares (ParamSpec, beside the model; the `law` field
+-- above names it; docs/measurement.md): the JKR surface energies, the bridges' surface tension and
+-- the lubrication viscosity ∝ α, the bridge volume ∝ α³ (the same fraction of the sphere), the
+-- rest unchanged. Only the effects that are on are scaled (and listed). Returns
 --   {alpha =, params = {name = scaled value}, rows = {...what changed and why...}}.
-function M.coarse_grain(P, d)
+function M.coarse_grain(P, d, effects)
   local ref = {particle_diameter = M.reference_diameter}
-  for _, e in ipairs(M.contact) do ref[e.name] = P[e.name] end
+  local laws = {particle_diameter = "diameter"}
+  for _, e in ipairs(M.contact) do
+    ref[e.name] = P[e.name]
+    laws[e.name] = M.contact_laws[e.name]
+  end
+  for _, fx in ipairs(M.active_effects(P, effects)) do
+    for name, v in pairs(fx.reference(P)) do
+      ref[name], laws[name] = v[1], v[2]
+    end
+  end
   local alpha = d / M.reference_diameter
-  local scaled, rows = paddy.coarse_grain{alpha = alpha, params = ref}
+  local scaled, rows = paddy.coarse_grain{alpha = alpha, params = ref, laws = laws}
   local changed = {}
   for _, row in ipairs(rows) do
     if row.changed then changed[#changed + 1] = row.name end
@@ -102,27 +209,53 @@ function M.coarse_grain(P, d)
   return {alpha = alpha, params = scaled, rows = rows, changed = changed}
 end
 
--- Materials and contact laws. `c` holds the (scaled) contact parameters. Mud–mud: JKR +
--- Hertz–Mindlin damping + Mindlin + constant-torque rolling; mud–steel: Hertz + Hertz–Mindlin
--- damping + Mindlin + constant-torque rolling (the reference's Hertz–Mindlin "no slip").
--- The rolling sub-model and the JKR stiffness option follow P.contact_conventions (M.conventions).
-function M.setup(sim, P, c)
+-- Materials and contact laws. `c` holds the (scaled) contact parameters. The two pairs' base
+-- chains: mud–mud JKR + Hertz–Mindlin damping + Mindlin + constant-torque rolling; mud–steel Hertz
+-- + Hertz–Mindlin damping + Mindlin + constant-torque rolling (the reference's Hertz–Mindlin "no
+-- slip"). The rolling sub-model and the JKR stiffness option follow P.contact_conventions
+-- (M.conventions). Then every effect that is on (M.effects, plus `effects` passed in) joins its
+-- pairs: its extra is appended, its normal model replaces the pair's, its parameters are added.
+function M.pair_specs(P, c, effects)
   local conv = M.conventions[P.contact_conventions or M.default_conventions]
+  local specs = {
+    mud_mud = {
+      normal = "jkr", damping = "hertz_mindlin", tangential = "mindlin", rolling = conv.rolling,
+      restitution = c.mud_mud_restitution, friction = c.mud_mud_friction,
+      rolling_friction = c.mud_mud_rolling_friction, surface_energy = c.jkr_surface_energy,
+      jkr_overlap_stiffness = conv.jkr_overlap_stiffness,
+    },
+    mud_steel = {
+      normal = "hertz", damping = "hertz_mindlin", tangential = "mindlin", rolling = conv.rolling,
+      restitution = c.mud_steel_restitution, friction = c.mud_steel_friction,
+      rolling_friction = c.mud_steel_rolling_friction,
+    },
+  }
+  for _, fx in ipairs(M.active_effects(P, effects)) do
+    for _, pair in ipairs(fx.pairs) do
+      local spec = specs[pair]
+      if not spec then error("effect '" .. fx.name .. "': unknown pair '" .. tostring(pair) .. "' (mud_mud, mud_steel)", 0) end
+      if fx.normal then spec.normal = fx.normal end
+      if fx.extra then
+        spec.extras = spec.extras or {}
+        spec.extras[#spec.extras + 1] = fx.extra
+      end
+      for k, v in pairs(fx.contact(c, conv)) do
+        if v == nil then error("effect '" .. fx.name .. "': no value for " .. k, 0) end
+        spec[k] = v
+      end
+    end
+  end
+  return specs
+end
+
+function M.setup(sim, P, c, effects)
   local mud = sim:material{name = "mud", density = P.mud_density, shear_modulus = P.mud_shear_modulus,
                            poisson = P.mud_poisson}
   local steel = sim:material{name = "steel", density = P.steel_density, shear_modulus = P.steel_shear_modulus,
                              poisson = P.steel_poisson}
-  sim:interaction(mud, mud, {
-    normal = "jkr", damping = "hertz_mindlin", tangential = "mindlin", rolling = conv.rolling,
-    restitution = c.mud_mud_restitution, friction = c.mud_mud_friction,
-    rolling_friction = c.mud_mud_rolling_friction, surface_energy = c.jkr_surface_energy,
-    jkr_overlap_stiffness = conv.jkr_overlap_stiffness,
-  })
-  sim:interaction(mud, steel, {
-    normal = "hertz", damping = "hertz_mindlin", tangential = "mindlin", rolling = conv.rolling,
-    restitution = c.mud_steel_restitution, friction = c.mud_steel_friction,
-    rolling_friction = c.mud_steel_rolling_friction,
-  })
+  local specs = M.pair_specs(P, c, effects)
+  sim:interaction(mud, mud, specs.mud_mud)
+  sim:interaction(mud, steel, specs.mud_steel)
   return mud, steel
 end
 
@@ -213,6 +346,16 @@ function M.describe(P)
     v.mud_mud_friction, v.mud_steel_friction, v.mud_mud_rolling_friction, v.mud_steel_rolling_friction,
     v.jkr_surface_energy, #i.given > 0 and ("; given with --set: " .. table.concat(i.given, ", ")) or "",
     P.timestep_fraction, P.timestep_damping and " (shortened below e = 0.13)" or "", i.timestep_from)
+    .. M.describe_effects(P)
+end
+
+-- "; effects: liquid_bridges (liquid_bridge_volume = 0.05), ..." or "" when every effect is off.
+function M.describe_effects(P, effects)
+  local on = {}
+  for _, fx in ipairs(M.active_effects(P, effects)) do
+    on[#on + 1] = string.format("%s (%s = %g)", fx.name, fx.strength, P[fx.strength])
+  end
+  return #on > 0 and ("\n            effects: " .. table.concat(on, ", ")) or ""
 end
 
 -- Particle radius option of sim:fill: monodisperse, or a normal distribution of diameters with

@@ -23,7 +23,7 @@ local P = paddy.parameters{
   {name = "outside_trials", default = 10, type = "integer", min = 0, max = 1000, description = "trials with an effect outside the candidate list"},
   {name = "particle_diameter", default = 0.016, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of the workflow's simulations"},
   {name = "truth_diameter", default = 0.014, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of the truth (the measurements)"},
-  {name = "candidate_set", default = "stand_in", choices = {"stand_in", "effects"},
+  {name = "candidate_set", default = "effects", choices = {"stand_in", "effects"},
    description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
@@ -44,10 +44,14 @@ local SETS = {
     outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
   },
   effects = {
+    -- 2 mm values (mud.lua coarse grains them; docs/physics.md §2.7): bridge volume as a fraction
+    -- of the sphere volume; viscosity up to 0.02 Pa s (20 x water), where the film is still
+    -- resolved by the step; wall JKR energy up to 0.3 J/m^2; pull-off up to 0.1 of the largest load (0.05 already
+    -- lowers the 20 mm slump by 95 mm, 0.3 makes the pile stand).
     candidates = {{name = "liquid_bridges", parameter = "liquid_bridge_volume", low = 0, high = 0.05},
-                  {name = "lubrication", parameter = "lubrication_viscosity", low = 0, high = 1.0},
+                  {name = "lubrication", parameter = "lubrication_viscosity", low = 0, high = 0.02},
                   {name = "wall_adhesion", parameter = "mud_steel_surface_energy", low = 0, high = 0.3},
-                  {name = "plastic_adhesion", parameter = "plastic_adhesion", low = 0, high = 1.0}},
+                  {name = "plastic_adhesion", parameter = "plastic_adhesion", low = 0, high = 0.1}},
     outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
   },
 }

@@ -8,6 +8,42 @@
 
 namespace paddy {
 
+namespace {
+std::string label(const SubModelInfo& info) { return std::string(toString(info.kind)) + " '" + info.name + "'"; }
+}  // namespace
+
+void ContactLaw::checkCompatible(const std::vector<const SubModelInfo*>& infos) {
+  for (std::size_t a = 0; a < infos.size(); ++a) {
+    for (std::size_t b = 0; b < infos.size(); ++b) {
+      if (a == b) continue;
+      if (a < b && infos[a]->name == infos[b]->name && infos[a]->kind == infos[b]->kind)
+        throw InputError("contact model " + label(*infos[a]) + " appears twice in one interaction");
+      const unsigned clash = infos[a]->refuses & infos[b]->provides;
+      if (clash)
+        throw InputError("contact model " + label(*infos[a]) + " cannot be combined with " + label(*infos[b]) +
+                         ": " + label(*infos[b]) + " provides " + capabilityNames(clash) + ", which " +
+                         label(*infos[a]) + " refuses");
+    }
+    unsigned missing = infos[a]->needs;
+    for (std::size_t b = 0; b < infos.size(); ++b)
+      if (b != a) missing &= ~infos[b]->provides;
+    if (missing) {
+      std::ostringstream msg;
+      msg << "contact model " << label(*infos[a]) << " needs " << capabilityNames(missing)
+          << ", which no other sub-model of the interaction provides (";
+      const char* sep = "";
+      for (std::size_t b = 0; b < infos.size(); ++b) {
+        if (b == a) continue;
+        msg << sep << label(*infos[b]) << " provides "
+            << (infos[b]->provides ? capabilityNames(infos[b]->provides) : std::string("nothing"));
+        sep = "; ";
+      }
+      msg << ")";
+      throw InputError(msg.str());
+    }
+  }
+}
+
 ContactLaw::ContactLaw(const PluginManager& plugins, const InteractionSpec& spec, const MaterialPair& pair) {
   struct Slot {
     SubModelKind kind;
@@ -15,12 +51,17 @@ ContactLaw::ContactLaw(const PluginManager& plugins, const InteractionSpec& spec
   };
   std::vector<Slot> slots;
   if (spec.normal.empty()) throw InputError("an interaction needs a normal contact model (e.g. normal = \"hertz\")");
+  // Order (contact_model.hpp): normal → normal-force extras → damping → tangential → rolling →
+  // twisting → other extras.
   slots.push_back({SubModelKind::Normal, spec.normal});
+  for (const auto& e : spec.extras)
+    if (plugins.subModel(e, SubModelKind::Extra).provides & kNormalForce) slots.push_back({SubModelKind::Extra, e});
   if (!spec.damping.empty()) slots.push_back({SubModelKind::Damping, spec.damping});
   if (!spec.tangential.empty()) slots.push_back({SubModelKind::Tangential, spec.tangential});
   if (!spec.rolling.empty()) slots.push_back({SubModelKind::Rolling, spec.rolling});
   if (!spec.twisting.empty()) slots.push_back({SubModelKind::Twisting, spec.twisting});
-  for (const auto& e : spec.extras) slots.push_back({SubModelKind::Extra, e});
+  for (const auto& e : spec.extras)
+    if (!(plugins.subModel(e, SubModelKind::Extra).provides & kNormalForce)) slots.push_back({SubModelKind::Extra, e});
 
   // Gather every parameter the chosen sub-models declare (shared names are one parameter).
   std::vector<const SubModelInfo*> infos;
@@ -30,6 +71,7 @@ ContactLaw::ContactLaw(const PluginManager& plugins, const InteractionSpec& spec
     infos.push_back(&info);
     for (const auto& p : info.params) specs.emplace(p.name, p);
   }
+  checkCompatible(infos);
   for (const auto& [name, value] : spec.params) {
     auto it = specs.find(name);
     if (it == specs.end()) {

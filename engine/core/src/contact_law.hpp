@@ -1,5 +1,5 @@
-// ContactLaw: one material pair's chain of sub-models (normal → damping → tangential → rolling
-// → twisting → extras), built once at set-up from an InteractionSpec and run on whole batches.
+// ContactLaw: one material pair's chain of sub-models (normal → normal-force extras → damping →
+// tangential → rolling → twisting → other extras; contact_model.hpp), built once at set-up from an InteractionSpec and run on whole batches.
 #pragma once
 
 #include <paddy/plugin_manager.hpp>
@@ -27,6 +27,9 @@ class ContactLaw {
   const ParamValues& parameters() const { return values_; }
 
  private:
+  // Throws InputError naming both sub-models when one refuses what another provides, or naming
+  // the sub-model whose needs no other one provides (Capability, contact_model.hpp).
+  static void checkCompatible(const std::vector<const SubModelInfo*>& infos);
   struct Stage {
     std::unique_ptr<SubModel> model;
     std::size_t history_offset = 0;

@@ -3,6 +3,8 @@
 
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
 
 namespace paddy {
 
@@ -16,6 +18,22 @@ const char* toString(SubModelKind kind) {
     case SubModelKind::Extra: return "extra";
   }
   return "?";
+}
+
+std::string capabilityNames(unsigned capabilities) {
+  static const std::pair<unsigned, const char*> names[] = {
+      {kNormalForce, "normal force"},
+      {kContactState, "contact state (active, contact radius, friction load)"},
+      {kNormalStiffness, "normal stiffness"},
+      {kTangentialStiffness, "tangential stiffness"},
+      {kCohesiveNormalForce, "cohesive normal force"},
+      {kRangeBeyondContact, "range beyond contact"},
+      {kViscousFluidForce, "viscous fluid force"},
+  };
+  std::string out;
+  for (const auto& [bit, name] : names)
+    if (capabilities & bit) out += (out.empty() ? "" : ", ") + std::string(name);
+  return out;
 }
 
 MaterialPair MaterialPair::of(const Material& a, const Material& b) {

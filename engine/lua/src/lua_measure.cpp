@@ -20,7 +20,11 @@
 //     slump, relative_error, relative_errors, coarse_grain, scaling_laws,
 //     rayleigh_time, jkr_pull_off_force.
 //   paddy.coarse_grain{alpha=, params={...}, laws={name = exponent | {exponent=, reason=} |
-//                      "law name"}} → scaled params, rows (one per parameter)
+//                      "law name"}} → scaled params, rows (one per parameter). A law name is
+//                      first looked up among the registered contact sub-models' parameters (the
+//                      law each declares in its ParamSpec), then among the built-in laws; a
+//                      parameter without a law falls back to the built-in law whose name is its
+//                      longest '_' suffix (kept for scripts that give no laws).
 //
 // Lengths are SI (metres); relative picture paths are taken inside paddy.out_dir.
 #include "lua_util.hpp"
@@ -31,6 +35,7 @@
 #include <paddy/errors.hpp>
 #include <paddy/lua/runtime.hpp>
 #include <paddy/measure/measure.hpp>
+#include <paddy/plugin_manager.hpp>
 #include <paddy/measure/slump_yield_stress.hpp>
 #include <paddy/measure/steady_torque.hpp>
 #include <paddy/measure/vane_startup.hpp>
@@ -562,6 +567,20 @@ const pm::ScalingLaw* lawBySuffix(const std::string& name) {
   return best;
 }
 
+// The coarse-graining law a registered contact sub-model declares for its parameter `param`
+// (ParamSpec::coarse_graining_exponent, beside the model that defines the parameter).
+std::optional<pm::ScalingLaw> declaredContactLaw(lua_State* L, const std::string& param) {
+  const auto plugins = runtimeState(L).pluginManager();
+  for (SubModelKind kind : {SubModelKind::Normal, SubModelKind::Damping, SubModelKind::Tangential,
+                            SubModelKind::Rolling, SubModelKind::Twisting, SubModelKind::Extra})
+    for (const SubModelInfo* info : plugins->subModels(kind))
+      for (const ParamSpec& p : info->params)
+        if (p.name == param)
+          return pm::ScalingLaw{param, p.coarse_graining_exponent,
+                                std::string(toString(kind)) + " '" + info->name + "': " + p.coarse_graining_reason};
+  return std::nullopt;
+}
+
 // paddy.coarse_grain{alpha=, params={name=value,...}, laws={name = exponent | "law" |
 //                    {exponent=, reason=}}} → scaled {name=value}, rows {{name, law, reference,
 //                    scaled, factor, exponent, changed, reason}, ...} (rows in name order)
@@ -570,6 +589,7 @@ int coarseGrain(lua_State* L) {
   const double alpha = opt.number("alpha");
   // Explicit laws first.
   std::map<std::string, pm::ScalingLaw> explicit_laws;
+  std::map<std::string, std::string> law_names;  // parameter → law name given as a string
   if (opt.push("laws") != LUA_TNIL) {
     if (!lua_istable(L, -1)) throw InputError("coarse_grain option 'laws' must be a table");
     const int t = lua_gettop(L);
@@ -581,9 +601,17 @@ int coarseGrain(lua_State* L) {
       if (lua_type(L, -1) == LUA_TNUMBER) {
         law.exponent = lua_tonumber(L, -1);
       } else if (lua_type(L, -1) == LUA_TSTRING) {
-        const pm::ScalingLaw& known = pm::CoarseGraining::law(lua_tostring(L, -1));
-        law.exponent = known.exponent;
-        law.reason = known.name + ": " + known.reason;
+        // A contact sub-model's parameter name (its declared law) first, then a built-in law.
+        const std::string law_name = lua_tostring(L, -1);
+        if (const auto declared = declaredContactLaw(L, law_name)) {
+          law.exponent = declared->exponent;
+          law.reason = law_name + " (" + declared->reason + ")";
+        } else {
+          const pm::ScalingLaw& known = pm::CoarseGraining::law(law_name);
+          law.exponent = known.exponent;
+          law.reason = known.name + ": " + known.reason;
+        }
+        law_names[name] = law_name;
       } else if (lua_istable(L, -1)) {
         OptionTable lt(L, -1, "coarse_grain laws." + name);
         law.exponent = lt.number("exponent");
@@ -616,7 +644,7 @@ int coarseGrain(lua_State* L) {
     (void)value;
     if (auto it = explicit_laws.find(name); it != explicit_laws.end()) {
       extra.push_back(it->second);
-      law_of[name] = "given";
+      law_of[name] = law_names.count(name) ? law_names[name] : "given";
     } else if (const pm::ScalingLaw* l = lawBySuffix(name)) {
       if (l->name != name) extra.push_back({name, l->exponent, l->name + ": " + l->reason});
       law_of[name] = l->name;

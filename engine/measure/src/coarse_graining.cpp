@@ -25,7 +25,7 @@ const std::vector<ScalingLaw>& CoarseGraining::laws() {
       {"rolling_friction", 0.0, "dimensionless; torque mu_r F_n R scales as force x length"},
       {"jkr_hysteretic", 0.0, "switch"},
       {"surface_energy", 1.0,
-       "pull-off force 1.5 pi gamma R* ~ alpha^2 like contact forces at fixed bulk stress; cohesive stress "
+       "pull-off force 3 pi gamma R* ~ alpha^2 like contact forces at fixed bulk stress; cohesive stress "
        "F_po/d^2 invariant (Thakur et al. 2016: adhesive force ~ size^2)"},
       {"time_step", 1.0, "Rayleigh time pi R/(0.163 nu + 0.877) sqrt(rho/G) ~ R"},
   };
@@ -57,7 +57,7 @@ double CoarseGraining::rayleighTime(double radius, double density, double shear_
 double CoarseGraining::jkrPullOffForce(double surface_energy, double r_eff) {
   if (!(surface_energy >= 0.0) || !(r_eff > 0.0))
     throw InputError("jkrPullOffForce: needs surface energy >= 0 and effective radius > 0");
-  return 1.5 * std::numbers::pi * surface_energy * r_eff;
+  return 3.0 * std::numbers::pi * surface_energy * r_eff;
 }
 
 ScaledParameters scaleParameters(const ParamValues& parameters, double alpha,

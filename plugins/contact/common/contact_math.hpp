@@ -52,13 +52,16 @@ inline ParamSpec restitutionParam() {
   // The range is (0, 1]; ParamSpec ranges are closed, so the lower bound is the smallest
   // positive normal double.
   return {"restitution", 0.0, std::numeric_limits<double>::min(), 1.0, "",
-          "coefficient of restitution e in (0, 1]; 1 = no damping", true};
+          "coefficient of restitution e in (0, 1]; 1 = no damping", true, 0.0,
+          "dimensionless; fixes the damping ratio (Radl et al. 2011; Sakai & Koshizuka 2009)"};
 }
 inline ParamSpec frictionParam() {
-  return {"friction", 0.0, 0.0, 10.0, "", "static (Coulomb) friction coefficient mu_s", true};
+  return {"friction", 0.0, 0.0, 10.0, "", "static (Coulomb) friction coefficient mu_s", true, 0.0,
+          "Coulomb ratio, dimensionless (Sakai & Koshizuka 2009)"};
 }
 inline ParamSpec rollingFrictionParam() {
-  return {"rolling_friction", 0.0, 0.0, 10.0, "", "rolling friction coefficient mu_r", true};
+  return {"rolling_friction", 0.0, 0.0, 10.0, "", "rolling friction coefficient mu_r", true, 0.0,
+          "dimensionless; torque mu_r F_n R scales as force x length"};
 }
 
 inline double param(const ParamValues& p, const std::string& name) { return p.at(name); }

@@ -17,20 +17,23 @@ extern "C" PADDY_PLUGIN_EXPORT int paddy_register_plugin(PluginRegistry* r) {
                   {},
                   [](const ParamValues&, const MaterialPair& m) -> std::unique_ptr<SubModel> {
                     return std::make_unique<HertzNormal>(m.e_star, m.g_star);
-                  }});
+                  },
+                  kNormalForce | kContactState | kNormalStiffness | kTangentialStiffness});
   r->addSubModel({"hertz_mindlin", SubModelKind::Damping,
                   "normal damping -2 sqrt(5/6) beta sqrt(S_n m*) v_n, beta = ln e/sqrt(ln^2 e + pi^2) "
                   "(EDEM Hertz-Mindlin; Tsuji et al. 1992)",
                   {restitutionParam()},
                   [](const ParamValues& p, const MaterialPair&) -> std::unique_ptr<SubModel> {
                     return std::make_unique<HertzMindlinDamping>(param(p, "restitution"));
-                  }});
+                  },
+                  kNormalForce, kContactState | kNormalStiffness});
   r->addSubModel({"mindlin", SubModelKind::Tangential,
                   "Mindlin no-slip spring F_t = -S_t xi - 2 sqrt(5/6) beta sqrt(S_t m*) v_t, total capped at "
                   "mu_s F_n (Mindlin & Deresiewicz 1953; EDEM)",
                   {frictionParam(), restitutionParam()},
                   [](const ParamValues& p, const MaterialPair&) -> std::unique_ptr<SubModel> {
                     return std::make_unique<MindlinTangential>(param(p, "friction"), param(p, "restitution"));
-                  }});
+                  },
+                  0, kContactState | kTangentialStiffness});
   return PADDY_PLUGIN_ABI_VERSION;
 }

@@ -27,7 +27,10 @@
 
 // Version 2: ContactBatch gained resist_i / resist_j (torques opposing a body's own rotation).
 // Version 3: the version is read from paddy_plugin_abi_version() before registration.
-#define PADDY_PLUGIN_ABI_VERSION 3
+// Version 4: ParamSpec gained the coarse-graining law; SubModelInfo gained provides / needs /
+//            refuses capability flags; extras providing a normal force run right after the
+//            normal model.
+#define PADDY_PLUGIN_ABI_VERSION 4
 #define PADDY_PLUGIN_EXPORT __attribute__((visibility("default")))
 
 namespace paddy {

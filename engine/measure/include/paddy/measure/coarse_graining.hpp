@@ -15,7 +15,7 @@
 //   friction, rolling_friction           k = 0   Coulomb ratios; the rolling torque μ_r F_n R then
 //                                                scales as force × length
 //   jkr_hysteretic                       k = 0   a switch
-//   surface_energy (JKR γ)               k = 1   the pull-off force F_po = (3/2)π γ R* scales as α²,
+//   surface_energy (JKR γ)               k = 1   the pull-off force F_po = 3π γ R* scales as α²,
 //                                                like every contact force at a given bulk stress
 //                                                (F ~ σ d²); held invariant: the cohesive stress
 //                                                F_po/d² ∝ γ/R and the stress Bond number
@@ -28,6 +28,10 @@
 // Not invariant (documented bias): the particle Bond number F_po/(m g) ∝ γ/(ρ g R²) falls as 1/α,
 // so single grains on the free surface are relatively less sticky; the number of particles across
 // the pile falls as 1/α. Sources in docs/measurement.md.
+// The contact parameters' laws are also declared beside the sub-models that define them
+// (ParamSpec::coarse_graining_exponent; paddy.coarse_grain uses those for a law given by name);
+// the rows here for restitution, friction, rolling friction, rolling damping, jkr_hysteretic and
+// surface_energy must agree with them (tests/contact/test_effects_interface.cpp checks it).
 #pragma once
 
 #include <paddy/contact_model.hpp>
@@ -78,7 +82,9 @@ class CoarseGraining {
   // Physical quantities used to check the laws.
   // T_R = π R / (0.163 ν + 0.877) · sqrt(ρ / G)  (reference README; the usual DEM Rayleigh-wave time)
   static double rayleighTime(double radius, double density, double shear_modulus, double poisson);
-  // JKR pull-off force (3/2) π γ R* (Johnson, Kendall & Roberts 1971)
+  // JKR pull-off force 3π γ R* = (3/2) π W R* with the work of adhesion W = 2γ (Johnson, Kendall &
+  // Roberts 1971); γ is the surface energy of the "jkr" sub-model (plugins/contact/jkr/jkr.hpp),
+  // whose force πγR* (4/3 t⁶ − 4 t³) has this minimum at t³ = 3/2.
   static double jkrPullOffForce(double surface_energy, double r_eff);
 
  private:
