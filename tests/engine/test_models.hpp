@@ -47,7 +47,7 @@ inline std::shared_ptr<PluginManager> testPlugins() {
   SubModelInfo lin;
   lin.name = "linear_spring";
   lin.kind = SubModelKind::Normal;
-  lin.params = {{"stiffness", 1000.0, 0.0, 1e12, "N/m", "spring constant", false}};
+  lin.params = {{"stiffness", 1000.0, 0.0, 1e12, "N/m", "spring constant", false, 0.0, "not coarse grained in these tests"}};
   lin.create = [](const ParamValues& p, const MaterialPair&) { return std::make_unique<LinearSpring>(p.at("stiffness")); };
   pm->addSubModel(lin);
   SubModelInfo age;
