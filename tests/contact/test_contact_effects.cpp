@@ -7,7 +7,7 @@
 //   plastic adhesion: A = λ F_max, F = A in contact, A (1 + δ/s_c) across the bonded gap
 #include "contact_test_util.hpp"
 
-#include "contact/contact_law.hpp"
+#include "contact_law.hpp"
 
 #include <hertz_mindlin/hertz.hpp>
 #include <liquid_bridge/liquid_bridge.hpp>

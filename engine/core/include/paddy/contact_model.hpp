@@ -86,7 +86,7 @@ class SubModel {
   virtual std::size_t historySize() const { return 0; }
   // How far apart (as a positive gap, [m]) two bodies can be and still interact, for a contact
   // with effective radius r_eff (for a wall contact r_eff is the sphere's radius).
-  // Contract the neighbour search relies on (engine/src/core/neighbour_list.cpp):
+  // Contract the neighbour search relies on (engine/core/src/neighbour_list.cpp):
   //   * a sub-model that acts beyond contact (overlap < 0) MUST return its reach here: a pair is
   //     only ever handed to compute() while its gap is below the chain's maxSeparation (the
   //     largest over its sub-models), so a force beyond that reach is silently never applied;
