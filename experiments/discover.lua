@@ -204,8 +204,9 @@ for k = 1, S.replicates do rep_points[k] = {theta = theta, lambda = {}, seed = s
 local reps, rep_results = evaluate("replicates", rep_points)
 local f_bar = stack.mean(reps)
 local r0 = stack.minus(y, f_bar)
-local noise = doe.noise_covariance{replicates = reps, sigma = (function() local s = {}; for i = 1, m do s[i] = 1 end; return s end)(),
-                                   n_avg = S.replicates}
+local ones = {}
+for i = 1, m do ones[i] = 1 end
+local noise = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = S.replicates}
 local cov = noise.covariance
 local located = {}
 for i, l in ipairs(L) do
@@ -238,8 +239,19 @@ for k, c in ipairs(cands) do
   signatures[c.name] = g
   dcands[k] = {name = c.name, signature = g, low = c.low, high = c.high}
 end
+-- The decision's thresholds: bootstrap null trials of the fitted noise model (Sigma re-estimated
+-- from S.replicates draws in every trial), or the chi^2 tables. n_avg: seeds behind a simulated value.
+local function thresholds(n_avg, candidates)
+  if S.thresholds ~= "bootstrap" then return {} end
+  return doe.bootstrap_thresholds{seed_covariance = noise.seed_covariance, replicates = S.replicates, n_avg = n_avg, sigma = ones,
+                                  jacobian = J, candidates = candidates, alpha = S.alpha, confusable = S.confusable,
+                                  trials = S.bootstrap_trials, seed = seed0}
+end
+local thr = thresholds(S.replicates, dcands)
 local diag = doe.diagnose{residual = r0, covariance = cov, jacobian = J, candidates = dcands, labels = labels, blocks = blocks,
-                          alpha = S.alpha, confusable = S.confusable}
+                          alpha = S.alpha, confusable = S.confusable, z_threshold = thr.z_threshold,
+                          q0_threshold = thr.q0_threshold, q_after_threshold = thr.q_after_threshold}
+diag.thresholds = thr
 say("   decision: %s%s (Q0 = %.4g on %s df, p = %.3g)", diag.decision, diag.named and (" - " .. diag.named) or "",
     diag.q0 or 0 / 0, tostring(diag.q0_df), diag.q0_p or 0 / 0)
 for _, c in ipairs(diag.candidates or {}) do
@@ -287,12 +299,14 @@ if named then
   local conf, conf_results = evaluate("confirmation", conf_points)
   local f_after = stack.mean(conf)
   local r1 = stack.minus(y, f_after)
-  local noise_after = doe.noise_covariance{replicates = reps, sigma = (function() local s = {}; for i = 1, m do s[i] = 1 end; return s end)(),
-                                           n_avg = S.confirm_seeds}
+  local noise_after = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = S.confirm_seeds}
   local rest = {}
   for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
+  local thr_after = #rest > 0 and thresholds(S.confirm_seeds, rest) or {}
   local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J, candidates = rest,
-                                                labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable} or nil
+                                                labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable,
+                                                z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
+                                                q_after_threshold = thr_after.q_after_threshold} or nil
   local se = last.se and last.se[p + 1] or 0
   after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
                                             high = math.min(c.high, joint.lambda + 1.96 * se), se = se},

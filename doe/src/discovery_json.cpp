@@ -1,5 +1,6 @@
 #include "paddy/doe/discovery_json.hpp"
 
+#include "paddy/doe/bootstrap_null.hpp"
 #include "paddy/doe/covariance.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/gauss_newton.hpp"
@@ -274,16 +275,45 @@ json compareFitsJson(const json& o) {
   return {{"lr", c.lr}, {"p", c.p}, {"delta_bic", c.deltaBic}, {"bayes_factor", finiteOrNull(c.bayesFactor)}, {"evidence", c.evidence}};
 }
 
+namespace {
+json thresholdsToJson(const NullThresholds& t, const char* method) {
+  json j{{"z_threshold", t.zThreshold}, {"q0_threshold", t.q0Threshold}, {"trials", t.trials}, {"alarms", t.alarms},
+         {"alarm_rate", t.alarmRate}, {"alarm_rate_upper", t.alarmRateUpper}, {"paired", t.paired}, {"method", method}};
+  j["q_after_threshold"] = t.qAfterThreshold ? json(*t.qAfterThreshold) : json(nullptr);
+  return j;
+}
+}  // namespace
+
 json nullThresholdsJson(const json& o) {
   requireObject(o);
   const auto z = list(required(o, "z_max"), "z_max");
   const auto q = list(required(o, "q0"), "q0");
   const auto qa = o.contains("q_after") && !o["q_after"].is_null() ? list(o["q_after"], "q_after") : std::vector<double>{};
-  const NullThresholds t = nullThresholds(z, q, o.contains("alpha") ? number(o["alpha"], "alpha") : 0.05, qa);
-  json j{{"z_threshold", t.zThreshold}, {"q0_threshold", t.q0Threshold}, {"trials", t.trials}, {"alarms", t.alarms},
-         {"alarm_rate", t.alarmRate}, {"alarm_rate_upper", t.alarmRateUpper}, {"paired", t.paired}};
-  j["q_after_threshold"] = t.qAfterThreshold ? json(*t.qAfterThreshold) : json(nullptr);
-  return j;
+  return thresholdsToJson(nullThresholds(z, q, o.contains("alpha") ? number(o["alpha"], "alpha") : 0.05, qa), "null_trials");
+}
+
+json bootstrapThresholdsJson(const json& o) {
+  requireObject(o);
+  const Eigen::MatrixXd seedCov = matrix(required(o, "seed_covariance"), "seed_covariance");
+  // Jacobian, candidates and the rule's options are read as diagnose reads them; the residual and
+  // covariance are the bootstrap's own (a zero residual and the identity stand in for the parse).
+  json d = o;
+  const auto m = seedCov.rows();
+  if (!d.contains("residual") || d["residual"].is_null()) d["residual"] = std::vector<double>(static_cast<std::size_t>(m), 0.0);
+  d.erase("covariance");
+  d["sigma"] = std::vector<double>(static_cast<std::size_t>(m), 1.0);
+  const DiagnoseInput parsed = diagnoseInputFromJson(d);
+  BootstrapNullInput in;
+  in.jacobian = parsed.jacobian;
+  in.candidates = parsed.candidates;
+  in.options = parsed.options;
+  in.seedCovariance = seedCov;
+  in.sigma = o.contains("sigma") && !o["sigma"].is_null() ? vector(o["sigma"], "sigma") : Eigen::VectorXd();
+  in.replicates = static_cast<int>(number(required(o, "replicates"), "replicates"));
+  in.nAvg = o.contains("n_avg") ? number(o["n_avg"], "n_avg") : 1.0;
+  if (o.contains("trials")) in.trials = static_cast<int>(number(o["trials"], "trials"));
+  if (o.contains("seed")) in.seed = static_cast<std::uint64_t>(number(o["seed"], "seed"));
+  return thresholdsToJson(bootstrapNullThresholds(in), "bootstrap");
 }
 
 void printDiagnosis(std::ostream& out, const Diagnosis& d) {

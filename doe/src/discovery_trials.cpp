@@ -1,5 +1,6 @@
 #include "paddy/doe/discovery_trials.hpp"
 
+#include "paddy/doe/bootstrap_null.hpp"
 #include "paddy/doe/covariance.hpp"
 #include "paddy/doe/error.hpp"
 
@@ -92,6 +93,8 @@ TrialCounts runTrials(const TrialModel& model, const TrialScenario& sc, int tria
                       const DecisionOptions& options, NullStatistics* collect) {
   if (trials < 1) throw DoeError("runTrials: trials must be >= 1");
   if (sc.replicates == 1 || sc.replicates < 0) throw DoeError("runTrials: replicates must be 0 (Sigma known) or >= 2");
+  if (sc.bootstrap < 0 || (sc.bootstrap > 0 && sc.replicates < 2))
+    throw DoeError("runTrials: bootstrap thresholds need Sigma estimated from >= 2 replicates");
   const Eigen::Index m = model.jacobian.rows();
   Eigen::VectorXd effect = Eigen::VectorXd::Zero(m);
   int truthIndex = -1;
@@ -119,7 +122,22 @@ TrialCounts runTrials(const TrialModel& model, const TrialScenario& sc, int tria
     if (sc.replicates >= 2) {
       Eigen::MatrixXd X(sc.replicates, m);
       for (int r = 0; r < sc.replicates; ++r) X.row(r) = noiseVector(rng, m, sc.noise).transpose();
-      in.covariance = noiseCovariance(X, Eigen::VectorXd(), 1.0).covariance;
+      const NoiseCovariance nc = noiseCovariance(X, Eigen::VectorXd(), 1.0);
+      in.covariance = nc.covariance;
+      if (sc.bootstrap > 0) {
+        BootstrapNullInput b;
+        b.jacobian = model.jacobian;
+        b.candidates = model.candidates;
+        b.seedCovariance = nc.seedCovariance;
+        b.replicates = sc.replicates;
+        b.trials = sc.bootstrap;
+        b.seed = rng();
+        b.options = options;
+        const NullThresholds thr = bootstrapNullThresholds(b);
+        in.options.zThreshold = thr.zThreshold;
+        in.options.q0Threshold = thr.q0Threshold;
+        in.options.qAfterThreshold = thr.qAfterThreshold;
+      }
     }
     const Diagnosis d = diagnose(in);
     const bool truthListed = truthIndex >= 0 &&

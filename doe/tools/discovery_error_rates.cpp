@@ -6,6 +6,11 @@
 // that noise kind, null_calibration.hpp), runs N trials of every scenario (null; truth A, B, C and
 // outside at standardised sizes 1..8) and writes DIR/discovery_error_rates.csv and .json with the
 // counts and one-sided 95 % Clopper–Pearson bounds. Deterministic for a given seed.
+//   paddy_discovery_error_rates --bootstrap B [--trials N] [--seed S] --out DIR
+// instead measures the thresholds the workflow uses (bootstrap_null.hpp): Sigma estimated from 8
+// replicates in every trial and the trial's thresholds from B bootstrap null trials of that
+// estimate; null, truth A at sizes 4, 6, 8, truth C at 6 and outside at 8 →
+// DIR/discovery_bootstrap_rates.csv and .json.
 #include "paddy/doe/csv.hpp"
 #include "paddy/doe/discovery_trials.hpp"
 #include "paddy/doe/error.hpp"
@@ -42,7 +47,7 @@ int intArg(const std::string& s, const std::string& what) {
 
 int main(int argc, char** argv) {
   try {
-    int trials = 2000, calibration = 2000;
+    int trials = 2000, calibration = 2000, bootstrap = 0;
     std::uint64_t seed = 1;
     std::string out;
     for (int i = 1; i < argc; ++i) {
@@ -53,9 +58,10 @@ int main(int argc, char** argv) {
       };
       if (a == "--trials") trials = intArg(next(), a);
       else if (a == "--calibration") calibration = intArg(next(), a);
+      else if (a == "--bootstrap") bootstrap = intArg(next(), a);
       else if (a == "--seed") seed = static_cast<std::uint64_t>(intArg(next(), a));
       else if (a == "--out") out = next();
-      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --seed S --out DIR)");
+      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --bootstrap B --seed S --out DIR)");
     }
     if (out.empty()) throw DoeError("--out DIR is required");
     const TrialModel model = syntheticTrialModel();
@@ -93,6 +99,38 @@ int main(int argc, char** argv) {
                                     "unknown", "none"};
     std::vector<std::vector<std::string>> rows;
     std::uint64_t scenarioSeed = seed * 1000003ULL;
+    auto record = [&](const std::string& noise, const std::string& mode, const TrialScenario& sc, const TrialCounts& c) {
+      const auto ok = clopperPearson(c.expected, c.trials);
+      const auto wrong = clopperPearson(c.wrongName, c.trials);
+      rows.push_back({noise, mode, sc.truth, fmt::format("{:g}", sc.size), std::to_string(c.trials),
+                      std::to_string(c.expected), fmt::format("{:.4f}", ok.rate), fmt::format("{:.4f}", ok.lower),
+                      fmt::format("{:.4f}", ok.upper), std::to_string(c.wrongName), fmt::format("{:.4f}", wrong.rate),
+                      fmt::format("{:.4f}", wrong.upper), std::to_string(c.correct), std::to_string(c.ambiguousWithTruth),
+                      std::to_string(c.ambiguousOther), std::to_string(c.unknown), std::to_string(c.none)});
+      doc["rows"].push_back({{"noise", noise}, {"thresholds", mode}, {"truth", sc.truth}, {"size", sc.size},
+                             {"trials", c.trials}, {"expected", c.expected}, {"expected_rate", ok.rate},
+                             {"expected_lower95", ok.lower}, {"expected_upper95", ok.upper},
+                             {"wrong_name", c.wrongName}, {"wrong_name_upper95", wrong.upper}, {"correct", c.correct},
+                             {"ambiguous_with_truth", c.ambiguousWithTruth}, {"ambiguous_other", c.ambiguousOther},
+                             {"unknown", c.unknown}, {"none", c.none}});
+    };
+    if (bootstrap > 0) {
+      doc["bootstrap_trials"] = bootstrap;
+      const std::vector<TrialScenario> scenarios{{"none", 0.0, NoiseKind::Gaussian, 8, bootstrap},
+                                                 {"A", 4.0, NoiseKind::Gaussian, 8, bootstrap},
+                                                 {"A", 6.0, NoiseKind::Gaussian, 8, bootstrap},
+                                                 {"A", 8.0, NoiseKind::Gaussian, 8, bootstrap},
+                                                 {"C", 6.0, NoiseKind::Gaussian, 8, bootstrap},
+                                                 {"outside", 8.0, NoiseKind::Gaussian, 8, bootstrap}};
+      for (const auto& sc : scenarios) {
+        record("gaussian_sigma_from_8_replicates", "bootstrap", sc, runTrials(model, sc, trials, ++scenarioSeed));
+        std::cerr << "done bootstrap " << sc.truth << " " << sc.size << "\n";
+      }
+      writeFileAtomic(out + "/discovery_bootstrap_rates.csv", toCsv(header, rows));
+      writeFileAtomic(out + "/discovery_bootstrap_rates.json", doc.dump(1) + "\n");
+      std::cout << "wrote " << out << "/discovery_bootstrap_rates.csv and .json (" << rows.size() << " rows)\n";
+      return 0;
+    }
     for (const auto& n : noises) {
       NullStatistics ns;
       runTrials(model, {"none", 0.0, n.kind, n.replicates}, calibration, seed * 7919ULL + 17, {}, &ns);
@@ -110,20 +148,7 @@ int main(int argc, char** argv) {
         for (const auto& t : truths)
           for (double s : sizes) scenarios.push_back({t, s, n.kind, n.replicates});
         for (const auto& sc : scenarios) {
-          const TrialCounts c = runTrials(model, sc, trials, ++scenarioSeed, opt);
-          const auto ok = clopperPearson(c.expected, c.trials);
-          const auto wrong = clopperPearson(c.wrongName, c.trials);
-          rows.push_back({n.name, mode, sc.truth, fmt::format("{:g}", sc.size), std::to_string(c.trials),
-                          std::to_string(c.expected), fmt::format("{:.4f}", ok.rate), fmt::format("{:.4f}", ok.lower),
-                          fmt::format("{:.4f}", ok.upper), std::to_string(c.wrongName), fmt::format("{:.4f}", wrong.rate),
-                          fmt::format("{:.4f}", wrong.upper), std::to_string(c.correct), std::to_string(c.ambiguousWithTruth),
-                          std::to_string(c.ambiguousOther), std::to_string(c.unknown), std::to_string(c.none)});
-          doc["rows"].push_back({{"noise", n.name}, {"thresholds", mode}, {"truth", sc.truth}, {"size", sc.size},
-                                 {"trials", c.trials}, {"expected", c.expected}, {"expected_rate", ok.rate},
-                                 {"expected_lower95", ok.lower}, {"expected_upper95", ok.upper},
-                                 {"wrong_name", c.wrongName}, {"wrong_name_upper95", wrong.upper}, {"correct", c.correct},
-                                 {"ambiguous_with_truth", c.ambiguousWithTruth}, {"ambiguous_other", c.ambiguousOther},
-                                 {"unknown", c.unknown}, {"none", c.none}});
+          record(n.name, mode, sc, runTrials(model, sc, trials, ++scenarioSeed, opt));
         }
         std::cerr << "done " << n.name << " " << mode << "\n";
       }

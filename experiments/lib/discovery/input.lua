@@ -115,6 +115,14 @@ function M.read(path)
   S.fd_step = number(path, "settings.fd_step", s.fd_step or 0.1, 1e-4, 0.5)
   S.alpha = number(path, "settings.alpha", s.alpha or 0.05, 1e-6, 0.5)
   S.confusable = number(path, "settings.confusable", s.confusable or 0.9, 0.5, 1)
+  -- Thresholds of the decision: bootstrap (null trials of the fitted noise model, which knows
+  -- that Sigma was estimated from few seeds; doe/include/paddy/doe/bootstrap_null.hpp) or the
+  -- chi^2 / normal tables with Holm (right only when Sigma is known).
+  S.thresholds = s.thresholds or "bootstrap"
+  if S.thresholds ~= "bootstrap" and S.thresholds ~= "tables" then
+    fail(path, string.format("settings.thresholds = '%s': allowed bootstrap, tables", tostring(S.thresholds)))
+  end
+  S.bootstrap_trials = number(path, "settings.bootstrap_trials", s.bootstrap_trials or 2000, 100, 100000)
   input.settings = S
   return input
 end

@@ -56,6 +56,8 @@ function M.summary(o, files)
     misfit_before = o.located.rms,
     misfit_after = a and a.rms or o.located.rms,
     q0 = d.q0, q0_df = d.q0_df, q0_p = d.q0_p,
+    thresholds = d.thresholds and d.thresholds.method and d.thresholds
+                 or {method = "tables", note = "chi^2 / normal tables with Holm"},
     misfit_statistic_before = d.misfit,
     misfit_statistic_after = a and a.diagnosis and a.diagnosis.misfit or nil,
     decision_after = a and a.diagnosis and a.diagnosis.decision or nil,

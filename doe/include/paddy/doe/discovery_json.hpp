@@ -6,6 +6,8 @@
 //   gaussNewtonJson     {theta, residual, jacobian, covariance | sigma, lower, upper, damping}
 //   compareFitsJson     {q_before, q_after, df, n, k_before, k_after}
 //   nullThresholdsJson  {z_max = {...}, q0 = {...}, q_after = {...}, alpha}
+//   bootstrapThresholdsJson {seed_covariance, replicates, n_avg, sigma, jacobian, candidates, alpha, trials, seed}
+//                       -> the same fields as nullThresholdsJson (bootstrap_null.hpp)
 #pragma once
 #include "paddy/doe/discovery.hpp"
 
@@ -21,6 +23,7 @@ nlohmann::json diagnoseJson(const nlohmann::json& in);
 nlohmann::json gaussNewtonJson(const nlohmann::json& in);
 nlohmann::json compareFitsJson(const nlohmann::json& in);
 nlohmann::json nullThresholdsJson(const nlohmann::json& in);
+nlohmann::json bootstrapThresholdsJson(const nlohmann::json& in);
 
 /// Human-readable summary: decision, Q0, candidate table, residual map.
 void printDiagnosis(std::ostream& out, const Diagnosis& d);

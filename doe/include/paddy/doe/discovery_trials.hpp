@@ -42,6 +42,8 @@ struct TrialScenario {
   double size = 0.0;   ///< delta (ignored for "none")
   NoiseKind noise = NoiseKind::Gaussian;
   int replicates = 0;  ///< 0: Sigma = I known; >= 2: Sigma estimated from this many replicates per trial
+  int bootstrap = 0;   ///< > 0 (with replicates >= 2): thresholds of each trial from this many bootstrap
+                       ///< null trials of its own Sigma estimate (bootstrap_null.hpp), as the workflow sets them
 };
 
 struct TrialCounts {
