@@ -10,7 +10,7 @@
 namespace paddy {
 
 namespace {
-constexpr int kCheckpointVersion = 1;
+constexpr int kCheckpointVersion = 2;  // 2: wall candidates refreshed apart from the list
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {
   std::vector<double> out(v.size() * 3);
@@ -42,6 +42,8 @@ void Simulation::saveCheckpoint(const std::string& path) const {
     f.writeAttr("forces_valid", impl_->forces_valid ? 1.0 : 0.0);
     f.writeAttr("skin", impl_->skin);
     f.writeAttr("list_build_time", impl_->list_build_time);
+    f.writeAttr("walls_refreshed", impl_->walls_refreshed ? 1.0 : 0.0);
+    f.writeAttr("wall_refresh_time", impl_->wall_refresh_time);
     f.write("particles/id", p_.id);
     f.write("particles/material", std::vector<std::int64_t>(p_.material.begin(), p_.material.end()));
     f.write("particles/radius", p_.radius);
@@ -63,6 +65,7 @@ void Simulation::saveCheckpoint(const std::string& path) const {
     f.write("list/history", l.history);
     f.write("list/live", std::vector<std::uint64_t>(l.live.begin(), l.live.end()));
     f.write("list/x_at_build", flatten(l.x_at_build), 3);
+    f.write("walls/x_at_refresh", flatten(impl_->walls_refreshed ? impl_->x_at_wall_refresh : l.x_at_build), 3);
     f.writeAttr("cell_size", l.cell_size);
     std::vector<std::uint64_t> wid, wwall, wkey;
     for (const auto& w : impl_->wall_state) {
@@ -97,6 +100,8 @@ void Simulation::loadCheckpoint(const std::string& path) {
   list_builds_ = static_cast<std::size_t>(f.readAttr("list_builds"));
   impl_->skin = f.readAttr("skin");
   impl_->list_build_time = f.readAttr("list_build_time");
+  impl_->walls_refreshed = f.readAttr("walls_refreshed") != 0.0;
+  impl_->wall_refresh_time = f.readAttr("wall_refresh_time");
   p_.id = f.read<std::uint64_t>("particles/id");
   auto mat = f.read<std::int64_t>("particles/material");
   p_.material.assign(mat.begin(), mat.end());
@@ -125,6 +130,8 @@ void Simulation::loadCheckpoint(const std::string& path) {
   auto live = f.read<std::uint64_t>("list/live");
   l.live.assign(live.begin(), live.end());
   l.x_at_build = unflatten(f.read<double>("list/x_at_build"));
+  impl_->x_at_wall_refresh.clear();
+  if (impl_->walls_refreshed) impl_->x_at_wall_refresh = unflatten(f.read<double>("walls/x_at_refresh"));
   l.cell_size = f.readAttr("cell_size");
   l.stride = impl_->history_stride;
   for (int m : p_.material)
@@ -142,17 +149,15 @@ void Simulation::loadCheckpoint(const std::string& path) {
   impl_->forces_valid = f.readAttr("forces_valid") != 0.0;
   if (impl_->list_valid && !walls_.empty()) {
     // Wall candidate lists are not stored: rebuild them exactly as they were built, from the
-    // positions and wall poses at the last list build.
+    // positions and wall poses at their last refresh (the list build, or a refresh of the walls
+    // alone after it).
     double rmax = 0.0, sep = 0.0;
     for (double r : p_.radius) rmax = std::max(rmax, r);
     for (const auto& lw : impl_->laws) sep = std::max(sep, lw.maxSeparation(rmax));
     impl_->wall_max_gap = sep;
-    ParticleView view{l.x_at_build.size(), l.x_at_build.data(), p_.radius.data()};
-    for (auto& w : walls_) {
-      w->moveTo(impl_->list_build_time);
-      w->buildCandidates(view, rmax + sep + impl_->skin);
-      w->markListBuilt();
-    }
+    const bool refreshed = impl_->walls_refreshed;
+    for (auto& w : walls_) w->moveTo(refreshed ? impl_->wall_refresh_time : impl_->list_build_time);
+    impl_->buildWallCandidates(*this, refreshed ? impl_->x_at_wall_refresh : l.x_at_build);
   }
   for (auto& w : walls_) w->moveTo(time_);
 }

@@ -13,6 +13,16 @@
 namespace paddy {
 
 void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
+  // The buffers keep their size between steps: re-initialise only when something changed (the
+  // batch history scratch is overwritten contact by contact before every use).
+  const std::size_t hist_size = ContactBatch::kCapacity * std::max<std::size_t>(history_stride, 1);
+  bool same = threads.size() == static_cast<std::size_t>(n_threads);
+  for (std::size_t t = 0; same && t < threads.size(); ++t) {
+    const ThreadBuffers& tb = threads[t];
+    same = tb.force.size() == n && tb.work.size() == laws.size() &&
+           (tb.work.empty() || tb.work[0].history.size() == hist_size);
+  }
+  if (same) return;
   threads.resize(static_cast<std::size_t>(n_threads));
   for (auto& tb : threads) {
     tb.force.resize(n);
@@ -21,7 +31,7 @@ void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
     tb.work.resize(laws.size());
     for (std::size_t l = 0; l < laws.size(); ++l) {
       tb.work[l].law = static_cast<int>(l);
-      tb.work[l].history.assign(ContactBatch::kCapacity * std::max<std::size_t>(history_stride, 1), 0.0);
+      tb.work[l].history.assign(hist_size, 0.0);
       tb.work[l].batch.history = tb.work[l].history.data();
       tb.work[l].batch.history_stride = history_stride;
     }
@@ -38,7 +48,8 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   prepareThreads(n, nthreads);
 
   // Wall contacts are found serially (each wall may parallelise its own search).
-  std::vector<double> wall_hist;
+  std::vector<double>& wall_hist = wall_scratch_history;
+  wall_hist.clear();
   if (!s.walls_.empty()) {
     const double max_gap = wall_max_gap;  // set at the list build, when radii last changed
     if (!dry)
@@ -46,15 +57,28 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     collectWallContacts(s, max_gap, wall_hist);
   }
   const std::size_t n_wall = wall_found.size();
-  std::vector<Vec3> wall_force(n_wall, Vec3::Zero());
+  std::vector<Vec3>& wall_force = wall_scratch_force;
+  wall_force.assign(n_wall, Vec3::Zero());
   // Velocities the contact laws see: at a step, predicted to the end of the step (see
-  // predictVelocities); otherwise the current ones.
-  const bool predicted = pass == ForcePass::Step && v_eval.size() == n;
+  // predictVelocity); otherwise the current ones.
+  const bool predicted = pass == ForcePass::Step && predict_velocities;
+  if (predicted) {
+    v_eval.resize(n);
+    w_eval.resize(n);
+  } else {
+    v_eval.clear();
+    w_eval.clear();
+  }
   const Vec3* vel = predicted ? v_eval.data() : p.velocity.data();
   const Vec3* omg = predicted ? w_eval.data() : p.omega.data();
 
 #pragma omp parallel num_threads(nthreads)
   {
+    if (predicted) {
+      // Before any thread clears the force arrays the prediction reads (implicit barrier).
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) predictVelocity(s, i);
+    }
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
     ThreadBuffers& tb = threads[static_cast<std::size_t>(t)];

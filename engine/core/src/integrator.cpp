@@ -56,17 +56,40 @@ void Simulation::Impl::rebuild(Simulation& s) {
   std::iota(prev_index.begin(), prev_index.end(), std::size_t{0});
   wall_max_gap = 0.0;
   for (const auto& law : laws) wall_max_gap = std::max(wall_max_gap, law.maxSeparation(rmax));
-  if (!s.walls_.empty()) {
-    const double sep = wall_max_gap;
-    ParticleView view{p.size(), p.position.data(), p.radius.data()};
-    for (auto& w : s.walls_) {
-      w->buildCandidates(view, rmax + sep + skin);
-      w->markListBuilt();
-    }
-  }
+  buildWallCandidates(s, p.position);
+  walls_refreshed = false;
+  x_at_wall_refresh.clear();
   list_valid = true;
   list_build_time = s.time_;
   ++s.list_builds_;
+}
+
+void Simulation::Impl::buildWallCandidates(Simulation& s, const std::vector<Vec3>& x) {
+  if (s.walls_.empty()) return;
+  const ParticleArrays& p = s.p_;
+  ParticleView view{x.size(), x.data(), p.radius.data(), s.threads_};
+  const double range = maxRadius(p) + wall_max_gap + skin;
+  for (auto& w : s.walls_) {
+    w->buildCandidates(view, range);
+    w->markListBuilt();
+  }
+}
+
+void Simulation::Impl::refreshWalls(Simulation& s) {
+  buildWallCandidates(s, s.p_.position);
+  walls_refreshed = true;
+  x_at_wall_refresh = s.p_.position;
+  wall_refresh_time = s.time_;
+  ++s.list_builds_;  // counts refreshes of the contact search: the re-sort schedule counts them
+}
+
+void Simulation::Impl::refresh(Simulation& s, double displacement_since_list_build) {
+  // A full rebuild here would give the same forces (the list still holds every pair within
+  // reach, in the same order); it is skipped unless the list is stale or the spatial re-sort,
+  // every sort_interval-th refresh, is due, so the re-sort comes at the same steps as before.
+  const bool sort_due = sort_interval > 0 && s.list_builds_ % static_cast<std::size_t>(sort_interval) == 0;
+  if (sort_due || 2.0 * displacement_since_list_build > skin || s.walls_.empty()) rebuild(s);
+  else refreshWalls(s);
 }
 
 void Simulation::Impl::sortSpatially(Simulation& s) {
@@ -96,22 +119,11 @@ void Simulation::Impl::sortSpatially(Simulation& s) {
   permute(prev_index);
 }
 
-void Simulation::Impl::predictVelocities(Simulation& s) {
-  ParticleArrays& p = s.p_;
-  const std::size_t n = p.size();
-  if (!predict_velocities) {
-    v_eval.clear();
-    w_eval.clear();
-    return;
-  }
-  v_eval.resize(n);
-  w_eval.resize(n);
+void Simulation::Impl::predictVelocity(const Simulation& s, std::size_t i) {
+  const ParticleArrays& p = s.p_;
   const double half = 0.5 * s.dt_;
-#pragma omp parallel for schedule(static) num_threads(s.threads_)
-  for (std::size_t i = 0; i < n; ++i) {
-    v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
-    w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
-  }
+  v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
+  w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
 }
 
 namespace {
@@ -148,18 +160,47 @@ void Simulation::step(std::uint64_t n) {
   const double dt = dt_;
   const double half = 0.5 * dt;
   const std::size_t np = p_.size();
+  // One parallel loop per step moves the particles: the closing half-kick of the previous step
+  // (deferred to here: nothing reads the velocities in between), the opening half-kick, the drift,
+  // and the largest displacements since the list build and since the last refresh of the contact
+  // search (the same unless the walls were refreshed on their own since the build). The same
+  // operations in the same order per particle as separate loops, so the same numbers.
+  bool closing_kick_due = false;
   for (std::uint64_t s = 0; s < n; ++s) {
-#pragma omp parallel for schedule(static) num_threads(threads_)
+    const bool closing = closing_kick_due;
+    const bool two_refs = m.walls_refreshed;
+    const Vec3* x_build = m.list.x_at_build.size() == np ? m.list.x_at_build.data() : nullptr;
+    const Vec3* x_refresh = two_refs && m.x_at_wall_refresh.size() == np ? m.x_at_wall_refresh.data() : nullptr;
+    double m2 = 0.0, r2 = 0.0;
+    bool bad = x_build == nullptr || (two_refs && x_refresh == nullptr);
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m2, r2) reduction(|| : bad)
     for (std::size_t i = 0; i < np; ++i) {
-      p_.velocity[i] += (half / p_.mass[i]) * p_.force[i];
-      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], half / p_.inertia[i]);
+      const double h_over_m = half / p_.mass[i], h_over_i = half / p_.inertia[i];
+      if (closing) {
+        p_.velocity[i] += h_over_m * p_.force[i];
+        p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], h_over_i);
+      }
+      p_.velocity[i] += h_over_m * p_.force[i];
+      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], h_over_i);
       p_.position[i] += dt * p_.velocity[i];
+      if (x_build) {
+        const double d2 = (p_.position[i] - x_build[i]).squaredNorm();
+        if (!std::isfinite(d2)) bad = true;
+        m2 = std::max(m2, d2);
+        if (x_refresh) {
+          const double e2 = (p_.position[i] - x_refresh[i]).squaredNorm();
+          if (!std::isfinite(e2)) bad = true;
+          r2 = std::max(r2, e2);
+        }
+      }
     }
+    closing_kick_due = false;
     time_ += dt;
     ++steps_;
     for (auto& w : walls_) w->moveTo(time_);
 
-    const double disp = m.list.maxDisplacement(p_, threads_);
+    const double disp = bad ? std::numeric_limits<double>::infinity() : std::sqrt(m2);
+    const double disp_refresh = two_refs ? (bad ? disp : std::sqrt(r2)) : disp;
     if (!std::isfinite(disp)) {
       std::ostringstream msg;
       msg << "a particle position became NaN or infinite at t = " << time_ << " s (step " << steps_
@@ -168,10 +209,9 @@ void Simulation::step(std::uint64_t n) {
     }
     double wall_disp = 0.0;
     for (const auto& w : walls_) wall_disp = std::max(wall_disp, w->displacementSinceListBuild());
-    if (2.0 * disp > m.skin || disp + wall_disp > m.skin) m.rebuild(*this);
+    if (2.0 * disp_refresh > m.skin || disp_refresh + wall_disp > m.skin) m.refresh(*this, disp);
 
-    m.predictVelocities(*this);
-    m.computeForces(*this, Impl::ForcePass::Step);
+    m.computeForces(*this, Impl::ForcePass::Step);  // predicts the velocities it uses first
     if (m.max_overlap_ratio > kMaxOverlapRatio) {
       std::ostringstream msg;
       msg << "contact overlap reached " << 100.0 * m.max_overlap_ratio << " % of the particle radius at t = "
@@ -179,6 +219,9 @@ void Simulation::step(std::uint64_t n) {
           << dt / rayleighTime() << " x Rayleigh time) is too large for these velocities; reduce it";
       throw InstabilityError(msg.str());
     }
+    closing_kick_due = true;
+  }
+  if (closing_kick_due) {
 #pragma omp parallel for schedule(static) num_threads(threads_)
     for (std::size_t i = 0; i < np; ++i) {
       p_.velocity[i] += (half / p_.mass[i]) * p_.force[i];

@@ -61,6 +61,11 @@ struct Simulation::Impl {
   double skin_fraction = 0.4;
   double skin = 0.0;
   double list_build_time = 0.0;
+  // Wall candidates refreshed on their own (refreshWalls) since the particle list was built:
+  // positions and time of that refresh (the skin criterion of the walls counts from it).
+  bool walls_refreshed = false;
+  std::vector<Vec3> x_at_wall_refresh;
+  double wall_refresh_time = 0.0;
   double wall_max_gap = 0.0;  // largest gap any law acts at for the largest particle (walls)
   int sort_interval = 20;
 
@@ -69,16 +74,26 @@ struct Simulation::Impl {
   std::vector<double> wall_history;
   std::vector<WallContact> wall_found;       // scratch
   std::vector<std::uint32_t> wall_of_found;
+  // Scratch of collectWallContacts and computeForces, kept to avoid allocations every step.
+  struct WallContactOrder {
+    std::uint64_t particle_id;
+    std::uint32_t wall, key, index;  // index into wall_scratch_found
+  };
+  std::vector<WallContact> wall_scratch_found, wall_scratch_tmp;
+  std::vector<WallContactOrder> wall_scratch_order;
+  std::vector<double> wall_scratch_history;  // history of this step's wall contacts
+  std::vector<Vec3> wall_scratch_force;      // force on the particle of each wall contact
 
   std::vector<ThreadBuffers> threads;
   double dt_fraction = 0.0;   // requested as a fraction of the Rayleigh time (0: explicit dt)
   bool dt_explicit = false;
 
   // Velocities at the end of the step, predicted as v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m, used by
-  // velocity-dependent laws (damping) at a step (integrator.cpp).
+  // velocity-dependent laws (damping) at a step. predictVelocity (integrator.cpp) does particle
+  // i; computeForces runs it over all particles at the start of its parallel region.
   std::vector<Vec3> v_eval, w_eval;
   bool predict_velocities = true;
-  void predictVelocities(Simulation& s);
+  void predictVelocity(const Simulation& s, std::size_t i);
 
   std::vector<ContactRecord> last_records;
   std::uint64_t active_contacts = 0;
@@ -96,6 +111,13 @@ struct Simulation::Impl {
   void storeWallHistory(const Simulation& s, const std::vector<double>& history_in);
   // Rebuild the neighbour list (and wall candidate lists), re-sorting if due (integrator.cpp).
   void rebuild(Simulation& s);
+  // The contact search is due again (a particle or a wall moved too far since the last refresh):
+  // rebuild the particle list when it is stale or a re-sort is due, else only the walls'
+  // candidate lists (a moving cone or hopper does not make the particle list stale).
+  void refresh(Simulation& s, double displacement_since_list_build);
+  void refreshWalls(Simulation& s);
+  // Candidate lists of all walls for particles at x (current radii), marked built now.
+  void buildWallCandidates(Simulation& s, const std::vector<Vec3>& x);
   void sortSpatially(Simulation& s);
   void prepareThreads(std::size_t n_particles, int n_threads);
 };

@@ -17,10 +17,13 @@ auto keyOf(const WallContactState& s) { return std::make_tuple(s.particle_id, s.
 void Simulation::Impl::collectWallContacts(Simulation& s, double max_gap, std::vector<double>& history_out) {
   const ParticleArrays& p = s.p_;
   const int nmat = static_cast<int>(s.materials_.size());
-  ParticleView view{p.size(), p.position.data(), p.radius.data()};
-  std::vector<WallContact> found;
-  std::vector<std::uint32_t> owner;
-  std::vector<WallContact> tmp;
+  ParticleView view{p.size(), p.position.data(), p.radius.data(), s.threads_};
+  // Scratch buffers are members: no allocation once they have grown to the step's size.
+  std::vector<WallContact>& found = wall_scratch_found;
+  std::vector<WallContact>& tmp = wall_scratch_tmp;
+  std::vector<WallContactOrder>& order = wall_scratch_order;
+  found.clear();
+  order.clear();
   for (std::size_t w = 0; w < s.walls_.size(); ++w) {
     tmp.clear();
     s.walls_[w]->findContacts(view, max_gap, tmp);
@@ -31,21 +34,21 @@ void Simulation::Impl::collectWallContacts(Simulation& s, double max_gap, std::v
                          "' and '" + s.materials_[s.walls_[w]->material()].name + "' (wall '" +
                          s.walls_[w]->name() + "')");
       if (c.overlap < -laws[static_cast<std::size_t>(law)].maxSeparation(p.radius[c.particle])) continue;
+      order.push_back({p.id[c.particle], static_cast<std::uint32_t>(w), c.key, static_cast<std::uint32_t>(found.size())});
       found.push_back(c);
-      owner.push_back(static_cast<std::uint32_t>(w));
     }
   }
-  std::vector<std::size_t> order(found.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return std::make_tuple(p.id[found[a].particle], owner[a], found[a].key) <
-           std::make_tuple(p.id[found[b].particle], owner[b], found[b].key);
+  // Order by (particle id, wall, key): the same comparisons as a tuple order, on keys gathered once.
+  std::sort(order.begin(), order.end(), [](const WallContactOrder& a, const WallContactOrder& b) {
+    if (a.particle_id != b.particle_id) return a.particle_id < b.particle_id;
+    if (a.wall != b.wall) return a.wall < b.wall;
+    return a.key < b.key;
   });
   wall_found.resize(found.size());
   wall_of_found.resize(found.size());
   for (std::size_t k = 0; k < order.size(); ++k) {
-    wall_found[k] = found[order[k]];
-    wall_of_found[k] = owner[order[k]];
+    wall_found[k] = found[order[k].index];
+    wall_of_found[k] = order[k].wall;
   }
 
   const std::size_t stride = history_stride;
@@ -53,7 +56,7 @@ void Simulation::Impl::collectWallContacts(Simulation& s, double max_gap, std::v
   if (stride == 0) return;
   std::size_t o = 0;
   for (std::size_t k = 0; k < wall_found.size(); ++k) {
-    const auto key = std::make_tuple(p.id[wall_found[k].particle], wall_of_found[k], wall_found[k].key);
+    const auto key = std::make_tuple(order[k].particle_id, order[k].wall, order[k].key);
     while (o < wall_state.size() && keyOf(wall_state[o]) < key) ++o;
     if (o < wall_state.size() && keyOf(wall_state[o]) == key)
       std::copy_n(&wall_history[o * stride], stride, &history_out[k * stride]);
@@ -62,7 +65,7 @@ void Simulation::Impl::collectWallContacts(Simulation& s, double max_gap, std::v
 
 void Simulation::Impl::storeWallHistory(const Simulation& s, const std::vector<double>& history_in) {
   // Called right after collectWallContacts() of the same step, so particle indices are current.
-  wall_history = history_in;
+  wall_history.assign(history_in.begin(), history_in.end());
   wall_state.resize(wall_found.size());
   for (std::size_t k = 0; k < wall_found.size(); ++k) {
     wall_state[k].particle_id = s.p_.id[wall_found[k].particle];

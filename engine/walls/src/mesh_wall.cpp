@@ -38,6 +38,9 @@ struct MeshWall::Grid {
 
 namespace {
 constexpr double kPi = 3.14159265358979323846;
+// Below this many particles (candidate search) or candidates (contacts) a wall's search runs on
+// one thread: a parallel region costs a few µs, about as much as ~100 candidates.
+constexpr long kParallelMin = 256;
 double cosDeg(double deg) { return std::cos(deg * kPi / 180.0); }
 
 using DisjointSets = paddy::UnionFind<std::uint32_t>;
@@ -193,6 +196,8 @@ double MeshWall::displacementSinceListBuild() const {
   // bounding-sphere bound |Δ(c)| + ‖R − R0‖₂ ρ with ‖R − R0‖₂ = sqrt(3 − tr(R R0ᵀ)).
   const Eigen::Matrix3d dR = state_.pose.R - pose_at_build_.R;
   const Vec3 dx = state_.pose.x - pose_at_build_.x;
+  // Not turned since the build (a fixed or translating wall): every point moved by dx exactly.
+  if ((dR.array() == 0.0).all()) return std::sqrt(dx.squaredNorm());
   if (mesh_.vertices.size() <= 200000) {
     double m2 = 0.0;
     for (const Vec3& v : mesh_.vertices) m2 = std::max(m2, (dR * v + dx).squaredNorm());
@@ -294,13 +299,13 @@ void MeshWall::buildCandidates(const ParticleView& p, double range) {
   const double query = rmax + std::max(range, 0.0);
   if (!grid_ || query > 2.0 * grid_->built_for || query < 0.25 * grid_->built_for) buildGrid(query);
 
-  const int nthreads = omp_get_max_threads();
+  const int nthreads = std::max(1, p.threads);
   std::vector<std::vector<std::uint32_t>> lpart(static_cast<std::size_t>(nthreads)), lcount(static_cast<std::size_t>(nthreads)),
       ltri(static_cast<std::size_t>(nthreads));
   const long n = static_cast<long>(p.n);
-  // Threads only pay off for large particle counts (fork/join costs ~µs, more when cores are
-  // shared); the results do not depend on the thread count.
-#pragma omp parallel if (n > 16384)
+  // The simulation's threads, static chunks in thread order: the lists come out in particle order
+  // whatever the thread count.
+#pragma omp parallel num_threads(nthreads) if (n >= kParallelMin)
   {
     const auto tid = static_cast<std::size_t>(omp_get_thread_num());
     std::vector<std::uint32_t> tris;
@@ -446,9 +451,13 @@ void MeshWall::closestHits(const Vec3& xb, double reach, const std::uint32_t* fi
 
 void MeshWall::findContacts(const ParticleView& p, double max_gap, std::vector<WallContact>& out) const {
   const long nc = static_cast<long>(cand_particle_.size());
-  const int nthreads = omp_get_max_threads();
-  std::vector<std::vector<WallContact>> local(static_cast<std::size_t>(nthreads));
-#pragma omp parallel if (nc > 16384)
+  const int nthreads = std::max(1, p.threads);
+  std::vector<std::vector<WallContact>>& local = contacts_per_thread_;
+  local.resize(static_cast<std::size_t>(nthreads));
+  for (auto& l : local) l.clear();
+  // Static chunks in thread order: concatenated, the contacts are in candidate order whatever the
+  // thread count.
+#pragma omp parallel num_threads(nthreads) if (nc >= kParallelMin)
   {
     const auto tid = static_cast<std::size_t>(omp_get_thread_num());
     std::vector<Hit> hits;

@@ -28,6 +28,7 @@ struct ParticleView {
   std::size_t n = 0;
   const Vec3* position = nullptr;
   const double* radius = nullptr;
+  int threads = 1;  // threads a wall may use for its search (the simulation's)
 };
 
 class Wall {

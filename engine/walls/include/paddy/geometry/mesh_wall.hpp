@@ -150,6 +150,7 @@ class MeshWall : public Wall {
   // candidates
   std::unique_ptr<Grid> grid_;
   std::vector<std::uint32_t> cand_particle_, cand_off_, cand_tri_;
+  mutable std::vector<std::vector<WallContact>> contacts_per_thread_;  // findContacts scratch
   // loads
   std::vector<geometry::LoadSample> history_;
 };
