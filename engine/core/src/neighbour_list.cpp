@@ -181,18 +181,4 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
   x_at_build = p.position;
 }
 
-double NeighbourList::maxDisplacement(const ParticleArrays& p, int threads) const {
-  const std::size_t n = p.size();
-  if (x_at_build.size() != n) return std::numeric_limits<double>::infinity();
-  double m2 = 0.0;
-  bool bad = false;
-#pragma omp parallel for schedule(static) reduction(max : m2) reduction(|| : bad) num_threads(threads)
-  for (std::size_t i = 0; i < n; ++i) {
-    const double d2 = (p.position[i] - x_at_build[i]).squaredNorm();
-    if (!std::isfinite(d2)) bad = true;
-    m2 = std::max(m2, d2);
-  }
-  return bad ? std::numeric_limits<double>::infinity() : std::sqrt(m2);
-}
-
 }  // namespace paddy

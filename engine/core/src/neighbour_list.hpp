@@ -37,8 +37,6 @@ struct NeighbourList {
              std::size_t history_stride, const std::vector<ContactLaw>& laws,
              const std::vector<int>& law_index, const std::vector<Material>& materials, int threads);
 
-  // Largest displacement of any particle since the build (NaN-safe: returns +inf for NaN).
-  double maxDisplacement(const ParticleArrays& p, int threads) const;
 };
 
 // Uniform grid of cells over the particles' bounding box; the particles of each cell are

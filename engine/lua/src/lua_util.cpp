@@ -265,4 +265,31 @@ void OptionTable::finish() const {
   throw InputError(msg.str());
 }
 
+// A Lua array of numbers at idx → vector (InputError naming `what`).
+std::vector<double> toNumberArray(lua_State* L, int idx, const std::string& what) {
+  idx = lua_absindex(L, idx);
+  if (lua_type(L, idx) != LUA_TTABLE) throw InputError(what + " must be an array of numbers");
+  const auto n = static_cast<lua_Integer>(lua_rawlen(L, idx));
+  std::vector<double> out;
+  out.reserve(static_cast<std::size_t>(n));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, idx, i);
+    const bool ok = lua_type(L, -1) == LUA_TNUMBER;
+    const double v = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+    if (!ok) throw InputError(what + "[" + std::to_string(i) + "] is not a number");
+    out.push_back(v);
+  }
+  return out;
+}
+
+void setNumber(lua_State* L, const char* key, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, -2, key);
+}
+void setInteger(lua_State* L, const char* key, long long v) {
+  lua_pushinteger(L, static_cast<lua_Integer>(v));
+  lua_setfield(L, -2, key);
+}
+
 }  // namespace paddy::lua

@@ -92,5 +92,10 @@ class OptionTable {
 
 // Pushes a Lua array of numbers.
 void pushNumberArray(lua_State* L, const std::vector<double>& values);
+// A Lua array of numbers at idx → vector (InputError naming `what`).
+std::vector<double> toNumberArray(lua_State* L, int idx, const std::string& what);
+// t[key] = v on the table at the top of the stack.
+void setNumber(lua_State* L, const char* key, double v);
+void setInteger(lua_State* L, const char* key, long long v);
 
 }  // namespace paddy::lua
