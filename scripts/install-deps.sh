@@ -13,6 +13,9 @@ packages=(
   libssl-dev
   gnuplot-nox
   libxml2-utils
+  # Sanitizer runs and fuzzing (scripts/sanitize.sh, scripts/fuzz.sh, docs/reliability.md):
+  # clang with its sanitizer and libFuzzer runtimes, LLVM's OpenMP runtime with the Archer tool.
+  clang libclang-rt-dev libomp-dev
 )
 # Optional: comparison codes for bench/ (not needed to build or test).
 if [ "${PADDY_BENCH_DEPS:-0}" = "1" ]; then

@@ -9,6 +9,13 @@
 // record_loads) without a callback, at the instants a callback with every = T would run:
 // t0 + k·n·dt (n = round(T/dt) steps, k = 1, 2, ...) and at the end of the run (also when a
 // callback stops it early), once per instant. Order at an instant: snapshot, loads, callback.
+//
+// checkpoint = "name.h5", checkpoint_every = T: saves the whole state (sim:checkpoint, written to a
+// temporary file and renamed) every round(T/dt) steps of this run. If that file exists when the
+// run starts, the run resumes from it: a script killed in the middle and started again with the
+// same output directory, seed and thread count ends in the same state as an uninterrupted run.
+// The steps done before the checkpoint are not repeated, nor their callbacks, snapshots and load
+// samples (docs/reliability.md). A relative path is taken inside paddy.out_dir.
 #include "lua_util.hpp"
 #include "registry.hpp"
 #include "runtime_state.hpp"
@@ -17,10 +24,12 @@
 
 #include <paddy/errors.hpp>
 #include <paddy/io/progress.hpp>
+#include <paddy/simulation.hpp>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -89,6 +98,17 @@ int run(lua_State* L) {
       throw InputError("sim:run: record_loads_every: the simulation has no mesh walls to record (sim:add_mesh_wall)");
   }
   lua_pop(L, 1);
+  std::uint64_t ck_every = 0;
+  std::filesystem::path ck_path;
+  if (auto e = opt.optNumber("checkpoint_every")) ck_every = stepsFor(*e, dt, "checkpoint_every");
+  if (opt.push("checkpoint") != LUA_TNIL) {
+    ck_path = toString(L, -1, "sim:run: checkpoint");
+    if (ck_path.empty()) throw InputError("sim:run: checkpoint must name a file (e.g. \"settle.h5\")");
+    if (ck_path.is_relative()) ck_path = runtimeState(L).out_dir / ck_path;
+  }
+  lua_pop(L, 1);
+  if (ck_every && ck_path.empty()) throw InputError("sim:run: checkpoint_every needs checkpoint = (file name)");
+  if (!ck_path.empty() && !ck_every) throw InputError("sim:run: checkpoint needs checkpoint_every = (seconds > 0)");
   const bool progress = opt.boolean("progress", true);
   opt.finish();
   auto recordLoads = [&] {
@@ -96,9 +116,20 @@ int run(lua_State* L) {
   };
 
   RuntimeState& st = runtimeState(L);
+  std::uint64_t done = 0, chunk = 16, recorded_at = 0;
+  if (ck_every && std::filesystem::exists(ck_path)) {
+    // Resume: the checkpoint was written by this run of the same script (same set-up before it).
+    const std::uint64_t first = sim.stepCount();
+    sim.loadCheckpoint(ck_path.string());
+    if (sim.stepCount() < first || sim.stepCount() - first > total)
+      throw InputError("sim:run: checkpoint '" + ck_path.string() + "' is at step " + std::to_string(sim.stepCount()) +
+                       ", outside this run (steps " + std::to_string(first) + " to " + std::to_string(first + total) +
+                       "): it belongs to another run; remove it to start afresh");
+    done = sim.stepCount() - first;
+  }
+  if (ck_path.has_parent_path()) std::filesystem::create_directories(ck_path.parent_path());
   io::ProgressLine line(total, sim.time(), dt, progress);
   const auto start = Clock::now();
-  std::uint64_t done = 0, chunk = 16, recorded_at = 0;
   bool stopped = false;
   if (snap_every && !h.snapshots) writeSnapshot(L, h);  // the initial state
   try {
@@ -106,7 +137,8 @@ int run(lua_State* L) {
       const std::uint64_t next_cb = has_callback ? std::min(total, nextEvent(done, every, total)) : total;
       const std::uint64_t next_snap = snap_every ? std::min(total, nextEvent(done, snap_every, total)) : total;
       const std::uint64_t next_rec = rec_every ? std::min(total, nextEvent(done, rec_every, total)) : total;
-      const std::uint64_t target = std::min({next_cb, next_snap, next_rec, done + chunk});
+      const std::uint64_t next_ck = ck_every ? std::min(total, nextEvent(done, ck_every, total)) : total;
+      const std::uint64_t target = std::min({next_cb, next_snap, next_rec, next_ck, done + chunk});
       const auto t0 = Clock::now();
       sim.step(target - done);
       const double spent = std::chrono::duration<double>(Clock::now() - t0).count();
@@ -123,6 +155,7 @@ int run(lua_State* L) {
         recordLoads();
         recorded_at = done;
       }
+      if (ck_every && done == next_ck) sim.saveCheckpoint(ck_path.string());
       if (has_callback && done == next_cb && !callBack(L, cb)) stopped = true;
     }
     if (rec_every && recorded_at != done) recordLoads();  // stopped early by the callback

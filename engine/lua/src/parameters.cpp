@@ -212,7 +212,8 @@ int parameters(lua_State* L) {
   if (st.options.help) throw HelpRequested{};
 
   for (const auto& [name, text] : st.options.sets) {
-    auto it = std::find_if(st.parameters.begin(), st.parameters.end(), [&](const auto& d) { return d.name == name; });
+    // (no structured binding in the capture: clang 14, used by the sanitizer builds, refuses it)
+    auto it = std::find_if(st.parameters.begin(), st.parameters.end(), [&n = name](const auto& d) { return d.name == n; });
     if (it == st.parameters.end())
       throw ScriptError("--set " + name + "=" + text + ": unknown parameter '" + name +
                             "'; the script declares: " + joinNames(st.parameters),
