@@ -213,7 +213,7 @@ elseif(CASE STREQUAL "determinism")
   # One thread: two runs agree with each other (not necessarily with two threads: the force sums
   # are added in another order).
   foreach(run d e)
-    run_paddy(code so se run base.lua --out out_${run} --seed 3 --threads 1 --set duration=0.004)
+    run_paddy(code se run base.lua --out out_${run} --seed 3 --threads 1 --set duration=0.004)
     expect_code(${code} 0)
     file(READ ${WORK}/out_${run}/result.json doc)
     string(JSON h_${run} GET "${doc}" metadata final_state_hash)
