@@ -32,6 +32,16 @@ function M.out(name)
   return paddy.out_dir .. "/" .. name
 end
 
+-- `path` as an absolute path (relative paths are taken from the working directory), for values
+-- handed to campaign jobs, which run in their own directories.
+function M.absolute(path)
+  if path:sub(1, 1) == "/" then return path end
+  local pipe = assert(io.popen("pwd", "r"))
+  local cwd = pipe:read("l")
+  pipe:close()
+  return cwd .. "/" .. path
+end
+
 -- Creates a directory (and its parents) if it does not exist; returns it.
 function M.mkdir(dir)
   os.execute("mkdir -p '" .. dir:gsub("'", "'\\''") .. "'")

@@ -109,7 +109,7 @@ local function draw_truth(t)
   return truth
 end
 
-local campaign_dir = util.out("campaign")
+local campaign_dir = util.absolute(util.out("campaign"))
 local sims = paddy.campaign{dir = campaign_dir, executor = "local", code_version = P.code_version ~= "" and P.code_version or nil}
 local flows = paddy.campaign{dir = util.out("trials"), executor = "local", max_parallel = 1,
                              code_version = P.code_version ~= "" and P.code_version or nil}
@@ -174,7 +174,7 @@ for i, t in ipairs(trials) do
   local path = paddy.write_json(string.format("inputs/trial_%04d_%08x.json", t.no, fnv1a(text)), input)
   paddy.write_json(string.format("truth/trial_%04d.json", t.no), truths[i])
   flow_keys[i] = flows:submit{script = workflow,
-                              params = {input = path, particle_diameter = d_work, campaign_dir = campaign_dir, max_parallel = 2,
+                              params = {input = util.absolute(path), particle_diameter = d_work, campaign_dir = campaign_dir, max_parallel = 2,
                                         pictures = false, code_version = P.code_version},
                               seed = 1000 + t.no}
 end

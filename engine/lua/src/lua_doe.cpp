@@ -366,6 +366,7 @@ int lDiagnose(lua_State* L) { return wrap<diagnoseJson>(L, "diagnose"); }
 int lGaussNewton(lua_State* L) { return wrap<gaussNewtonJson>(L, "gauss_newton"); }
 int lCompareFits(lua_State* L) { return wrap<compareFitsJson>(L, "compare_fits"); }
 int lNullThresholds(lua_State* L) { return wrap<nullThresholdsJson>(L, "null_thresholds"); }
+int lBootstrapThresholds(lua_State* L) { return wrap<bootstrapThresholdsJson>(L, "bootstrap_thresholds"); }
 
 }  // namespace
 }  // namespace paddy::doe
@@ -381,6 +382,7 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"gauss_newton", paddy::doe::lGaussNewton},
                                  {"compare_fits", paddy::doe::lCompareFits},
                                  {"null_thresholds", paddy::doe::lNullThresholds},
+                                 {"bootstrap_thresholds", paddy::doe::lBootstrapThresholds},
                                  {nullptr, nullptr}};
   luaL_newlib(L, fns);
   return 1;
