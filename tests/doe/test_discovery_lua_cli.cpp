@@ -1,5 +1,5 @@
 // The discovery statistics through Lua (paddy.doe.noise_covariance, diagnose, gauss_newton,
-// compare_fits, null_thresholds) and the command line (paddy doe diagnose).
+// compare_fits, null_thresholds, bootstrap_thresholds) and the command line (paddy doe diagnose).
 #include "doe_test_util.hpp"
 #include "paddy/doe/cli.hpp"
 #include <paddy/lua/doe.hpp>
@@ -68,8 +68,22 @@ TEST_CASE("discovery/lua: the workflow's API", "[doe][discovery]") {
     assert(math.abs(lr.lr - 9.7) < 1e-12 and lr.p < 0.01 and math.abs(lr.delta_bic - (-9.7 + math.log(30))) < 1e-12)
     local t = doe.null_thresholds{z_max = {0.1, 0.5, 2.0, 1.0}, q0 = {10, 12, 30, 11}, alpha = 0.25}
     assert(t.z_threshold == 1.0 and t.q0_threshold == 12 and t.alarms == 1)
+    -- Bootstrap thresholds: Sigma of 6 observables from 5 replicates widens Q0 well past the
+    -- chi^2(5) table's 95 % point (11.07); the same seed gives the same thresholds.
+    local I = {}
+    for i = 1, 6 do I[i] = {}; for j = 1, 6 do I[i][j] = i == j and 1 or 0 end end
+    local args = {seed_covariance = I, replicates = 5, jacobian = {{1}, {1}, {1}, {1}, {1}, {1}},
+                  candidates = {{name = "a", signature = {1, -1, 0, 0, 1, -1}, low = 0, high = 10},
+                                {name = "b", signature = {0, 0, 1, -1, 0, 0}, low = 0, high = 10}},
+                  trials = 300, seed = 3}
+    local b1, b2 = doe.bootstrap_thresholds(args), doe.bootstrap_thresholds(args)
+    assert(b1.method == "bootstrap" and b1.trials == 300, b1.method)
+    assert(b1.q0_threshold == b2.q0_threshold and b1.z_threshold == b2.z_threshold)
+    assert(b1.q0_threshold > 11.07, b1.q0_threshold)
   )");
   CHECK(ok == "");
+  CHECK_THAT(lua.run(R"(require("paddy.doe").bootstrap_thresholds{seed_covariance = {{1, 0}, {0, 1}}, replicates = 1})"),
+             Catch::Contains("paddy.doe.bootstrap_thresholds") && Catch::Contains("replicates"));
   CHECK_THAT(lua.run(R"(require("paddy.doe").diagnose{residual = {1, 2}, sigma = {1, 1, 1}})"),
              Catch::Contains("paddy.doe.diagnose") && Catch::Contains("sigma: 3 entries"));
   CHECK_THAT(lua.run(R"(require("paddy.doe").diagnose{residual = {1, 2, 3}, covariance = {{1, 0, 0}, {0, -1, 0}, {0, 0, 1}}})"),
