@@ -45,7 +45,7 @@ local wall_start = os.time()
 -- The experiment scripts live beside this one (experiments/), wherever the workflow is started from.
 local here = (debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$")) or "."
 local input = input_file.read(P.input)
-for _, f in ipairs({"gauss_newton", "noise_covariance", "diagnose", "compare_fits"}) do
+for _, f in ipairs({"gauss_newton", "noise_covariance", "diagnose", "compare_fits", "bootstrap_thresholds"}) do
   if type(doe[f]) ~= "function" then
     error("discover.lua: this build has no paddy.doe." .. f .. " (the statistics of docs/discovery.md)", 0)
   end

@@ -1,8 +1,8 @@
 // The discovery statistics through Lua (paddy.doe.noise_covariance, diagnose, gauss_newton,
 // compare_fits, null_thresholds, bootstrap_thresholds) and the command line (paddy doe diagnose).
+#include "doe_lua_state.hpp"
 #include "doe_test_util.hpp"
 #include "paddy/doe/cli.hpp"
-#include <paddy/lua/doe.hpp>
 
 #include <catch2/catch.hpp>
 #include <fstream>
@@ -11,24 +11,6 @@
 #include <sstream>
 
 namespace {
-struct Lua {
-  lua_State* L = luaL_newstate();
-  Lua() {
-    luaL_openlibs(L);
-    luaL_requiref(L, "paddy.doe", luaopen_paddy_doe, 0);
-    lua_pop(L, 1);
-  }
-  ~Lua() { lua_close(L); }
-  std::string run(const std::string& code) {
-    if (luaL_dostring(L, code.c_str()) != LUA_OK) {
-      std::string e = lua_tostring(L, -1);
-      lua_pop(L, 1);
-      return e;
-    }
-    return "";
-  }
-};
-
 // The hand-worked example of test_discovery_score.cpp, plus a second, unrelated candidate.
 const char* kInput = R"({
   "residual": [1, 2, 6], "sigma": [1, 1, 1], "jacobian": [[1], [1], [1]],
@@ -38,7 +20,7 @@ const char* kInput = R"({
 }  // namespace
 
 TEST_CASE("discovery/lua: the workflow's API", "[doe][discovery]") {
-  Lua lua;
+  doe_test::LuaState lua;
   const std::string ok = lua.run(R"(
     local doe = require("paddy.doe")
     local cov = doe.noise_covariance{replicates = {{1, 2, 0}, {2, 1, 1}, {3, 4, 1}, {6, 5, 2}}, sigma = {0.5, 0, 1}, n_avg = 2}

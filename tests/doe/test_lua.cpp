@@ -1,31 +1,11 @@
-#include <paddy/lua/doe.hpp>
+#include "doe_lua_state.hpp"
 
 #include <catch2/catch.hpp>
 #include <lua.hpp>
 #include <string>
 
-namespace {
-struct Lua {
-  lua_State* L = luaL_newstate();
-  Lua() {
-    luaL_openlibs(L);
-    luaL_requiref(L, "paddy.doe", luaopen_paddy_doe, 0);
-    lua_pop(L, 1);
-  }
-  ~Lua() { lua_close(L); }
-  std::string run(const std::string& code) {  // returns "" or the error message
-    if (luaL_dostring(L, code.c_str()) != LUA_OK) {
-      std::string e = lua_tostring(L, -1);
-      lua_pop(L, 1);
-      return e;
-    }
-    return "";
-  }
-};
-}  // namespace
-
 TEST_CASE("doe/lua: design, analyze, optimize, steepest_ascent", "[doe]") {
-  Lua lua;
+  doe_test::LuaState lua;
   const std::string ok = lua.run(R"(
     local doe = require("paddy.doe")
     local d = doe.design{type = "bbd", names = {"A", "B", "C"}, center = 5,
@@ -55,7 +35,7 @@ TEST_CASE("doe/lua: design, analyze, optimize, steepest_ascent", "[doe]") {
 }
 
 TEST_CASE("doe/lua: errors are raised with clear messages", "[doe]") {
-  Lua lua;
+  doe_test::LuaState lua;
   CHECK_THAT(lua.run(R"(require("paddy.doe").design{type = "bbd", factors = 9})"),
              Catch::Contains("paddy.doe.design") && Catch::Contains("3 to 7 factors"));
   CHECK_THAT(lua.run(R"(require("paddy.doe").analyze{data = {{A = 1, y = 2}, {A = "x", y = 3}},
