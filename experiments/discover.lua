@@ -99,6 +99,7 @@ local function evaluate(stage, points)
       for k, v in pairs(e.set) do params[k] = v end
       for j, f in ipairs(free) do params[f.parameter] = pt.theta[j] end
       for _, c in ipairs(cands) do params[c.parameter] = (pt.lambda or {})[c.name] or 0 end
+      if pt.diameter then params.particle_diameter = pt.diameter end
       jp[#jp + 1] = {script = here .. "/" .. e.script, params = params, seed = pt.seed, label = (pt.label or "") .. " " .. e.name, responses = {}}
     end
   end
@@ -117,8 +118,6 @@ local function evaluate(stage, points)
   return out, res
 end
 
-local lower, upper = {}, {}
-for j, f in ipairs(free) do lower[j], upper[j] = f.low, f.high end
 -- Forward-difference step of parameter j at theta: fd_step of its range, toward the inside.
 local function fd_step(lo, hi, v)
   local h = S.fd_step * (hi - lo)
@@ -126,13 +125,13 @@ local function fd_step(lo, hi, v)
   return h
 end
 -- f(point) and the Jacobian by forward differences at one seed (common random numbers).
--- `dims` = {{get = value, set = function(pt, v), lo, hi}, ...}.
+-- `dims` = {{get = function(pt) -> value, set = function(pt, v) -> new point, lo =, hi =}, ...}.
 local function jacobian_at(stage, base, dims)
   local pts = {base}
   local steps = {}
   for j, d in ipairs(dims) do
     steps[j] = fd_step(d.lo, d.hi, d.get(base))
-    local pt = d.shift(base, steps[j])
+    local pt = d.set(base, d.get(base) + steps[j])
     pt.label = base.label .. " +h" .. j
     pts[#pts + 1] = pt
   end
@@ -154,7 +153,7 @@ local function theta_dims()
   local dims = {}
   for j, f in ipairs(free) do
     dims[j] = {lo = f.low, hi = f.high, get = function(pt) return pt.theta[j] end,
-               shift = function(pt, h) local q = copy_point(pt); q.theta[j] = q.theta[j] + h; return q end}
+               set = function(pt, v) local q = copy_point(pt); q.theta[j] = v; return q end}
   end
   return dims
 end
@@ -169,7 +168,70 @@ local function fmt_theta(theta)
   return #t > 0 and table.concat(t, ", ") or "(no free parameters)"
 end
 
+local function fmt_point(pt)
+  local t = {fmt_theta(pt.theta)}
+  for k, v in pairs(pt.lambda or {}) do t[#t + 1] = string.format("%s = %.4g", k, v) end
+  return table.concat(t, ", ")
+end
+
 local outcome = {input = input, parameters = P, layout = L, measured = y, fixed = fixed}
+
+-- Gauss-Newton with step control over `dims` from the point `start` (the calibration and the
+-- recalibration with an effect). Every point runs at start.seed (common random numbers), so the
+-- misfits of successive points compare like for like; a step that raises the misfit is halved
+-- toward the last accepted point (at most S.backtracks times); the fit stops after S.iterations
+-- steps, when the next step would move no coordinate by more than S.converge of its range, or when
+-- no halving helps, and returns the best point run with its f, Jacobian, residual and the
+-- Gauss-Newton step computed there (its se).
+local function fit(stage, start, dims, weights, history)
+  local lo, hi = {}, {}
+  for j, d in ipairs(dims) do lo[j], hi[j] = d.lo, d.hi end
+  local function coords(pt) local x = {}; for j, d in ipairs(dims) do x[j] = d.get(pt) end; return x end
+  local function at(x)
+    local pt = copy_point(start)
+    for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
+    return pt
+  end
+  local x, best, it, tries = coords(start), nil, 0, 0
+  while true do
+    local base = at(x)
+    base.label = string.format("%s %d%s", stage, it, tries > 0 and ("." .. tries) or "")
+    local f, Jt = jacobian_at(stage, base, dims)
+    local r = stack.minus(y, f)
+    local rms = stack.rms_standardised(r, weights)
+    local accepted = not best or rms <= best.rms
+    history[#history + 1] = {iteration = it, x = x, point = base, rms_sigma = rms, accepted = accepted, backtrack = tries}
+    say("   %s %d%s: %s, RMS residual %.3g%s", stage, it, tries > 0 and string.format(" (step halved %d x)", tries) or "",
+        fmt_point(base), rms, accepted and "" or " - rejected")
+    if accepted then
+      best = {x = x, point = base, f = f, J = Jt, r = r, rms = rms}
+      best.step = #dims > 0 and doe.gauss_newton{theta = x, residual = r, jacobian = Jt, covariance = weights,
+                                                 lower = lo, upper = hi, damping = 0} or nil
+      tries = 0
+    elseif tries < S.backtracks then
+      tries = tries + 1
+      local half = {}
+      for j = 1, #dims do half[j] = 0.5 * (best.x[j] + x[j]) end
+      x = half
+      goto continue
+    else
+      say("   no step lowered the misfit: stopping at the best point run")
+      break
+    end
+    if it == S.iterations or #dims == 0 then break end
+    do
+      local largest = 0
+      for j = 1, #dims do largest = math.max(largest, math.abs(best.step.theta[j] - best.x[j]) / (hi[j] - lo[j])) end
+      if largest < S.converge then
+        say("   converged: the next step moves no parameter by more than %.3g of its range", S.converge)
+        break
+      end
+      x, it, tries = best.step.theta, it + 1, 0
+    end
+    ::continue::
+  end
+  return best
+end
 
 -----------------------------------------------------------------------------------------------
 -- 1. Calibrate the free parameters (measurement sigma as the weights: the seed scatter is not
@@ -177,22 +239,16 @@ local outcome = {input = input, parameters = P, layout = L, measured = y, fixed 
 local theta = {}
 for j, f in ipairs(free) do theta[j] = f.start end
 local calib = {iterations = {}}
-local J, f_hat
-say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), %d Gauss-Newton iteration(s)",
+say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), at most %d Gauss-Newton iteration(s)",
     p, m, #input.experiments, S.iterations)
-for it = 0, S.iterations do
-  local base = {theta = theta, lambda = {}, seed = seed0, label = "calibration " .. it}
-  local f
-  f, J = jacobian_at("calibration", base, theta_dims())
-  local r = stack.minus(y, f)
-  local rms = stack.rms_standardised(r, identity(m))
-  calib.iterations[#calib.iterations + 1] = {iteration = it, theta = theta, rms_sigma = rms}
-  say("   iteration %d: %s, RMS residual %.3g sigma", it, fmt_theta(theta), rms)
-  f_hat = f
-  if it == S.iterations or p == 0 then break end
-  local step = doe.gauss_newton{theta = theta, residual = r, jacobian = J, covariance = identity(m), lower = lower, upper = upper, damping = 0}
-  theta = step.theta
+local history = {}
+local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m), history)
+for _, h in ipairs(history) do
+  calib.iterations[#calib.iterations + 1] = {iteration = h.iteration, theta = h.point.theta, rms_sigma = h.rms_sigma,
+                                             accepted = h.accepted, backtrack = h.backtrack}
 end
+theta = cal.point.theta
+local J, f_hat = cal.J, cal.f
 calib.theta = theta
 outcome.calibration = calib
 
@@ -206,7 +262,13 @@ local f_bar = stack.mean(reps)
 local r0 = stack.minus(y, f_bar)
 local ones = {}
 for i = 1, m do ones[i] = 1 end
-local noise = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = S.replicates}
+-- Seeds behind a simulated value, with the specimen scatter of the measurements folded in:
+-- Sigma_seed / n + Sigma_seed / measured_repeats = Sigma_seed / n_eff.
+local function n_eff(n)
+  if S.measured_repeats > 0 then return 1 / (1 / n + 1 / S.measured_repeats) end
+  return n
+end
+local noise = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = n_eff(S.replicates)}
 local cov = noise.covariance
 local located = {}
 for i, l in ipairs(L) do
@@ -215,6 +277,33 @@ for i, l in ipairs(L) do
 end
 outcome.located = {residuals = located, noise = noise, rms = stack.rms_standardised(r0, cov)}
 say("   RMS standardised residual %.3g (seed scatter shrinkage %.3g)", outcome.located.rms, noise.shrinkage or 0 / 0)
+
+-- Resolution bias: the observables' shift from the particle diameter to resolution_factor x it
+-- at θ̂ (mean of resolution_seeds runs minus the replicates' mean). Added to the Jacobian as a
+-- nuisance column: a misfit along it is what refining the model would change, never evidence of
+-- a missing effect.
+local J_diag = J
+if S.resolution_factor > 0 then
+  local d_fine = P.particle_diameter * S.resolution_factor
+  say("   resolution bias: %d run(s) at %.4g m", S.resolution_seeds, d_fine)
+  local res_points = {}
+  for k = 1, S.resolution_seeds do
+    res_points[k] = {theta = theta, lambda = {}, seed = seed0 + 300 + k, diameter = d_fine, label = "resolution " .. k}
+  end
+  local fine = evaluate("resolution", res_points)
+  local b = stack.minus(stack.mean(fine), f_bar)
+  J_diag = {}
+  for i = 1, m do
+    J_diag[i] = {}
+    for j = 1, p do J_diag[i][j] = J[i][j] end
+    J_diag[i][p + 1] = b[i]
+  end
+  local bias = {}
+  for i, l in ipairs(L) do bias[i] = {label = l.label, shift = b[i] * l.sigma, z = b[i] / math.sqrt(cov[i][i])} end
+  outcome.resolution = {diameter = d_fine, seeds = S.resolution_seeds, shift = bias,
+                        rms = stack.rms_standardised(b, cov)}
+  say("   resolution shift: RMS %.3g noise sd", outcome.resolution.rms)
+end
 
 -----------------------------------------------------------------------------------------------
 -- 3. Name: signatures at zero strength and the diagnosis.
@@ -244,12 +333,12 @@ end
 local function thresholds(n_avg, candidates)
   if S.thresholds ~= "bootstrap" then return {} end
   return doe.bootstrap_thresholds{seed_covariance = noise.seed_covariance, replicates = S.replicates, n_avg = n_avg, sigma = ones,
-                                  jacobian = J, candidates = candidates, alpha = S.alpha, confusable = S.confusable,
+                                  jacobian = J_diag, candidates = candidates, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                   trials = S.bootstrap_trials, seed = seed0}
 end
-local thr = thresholds(S.replicates, dcands)
-local diag = doe.diagnose{residual = r0, covariance = cov, jacobian = J, candidates = dcands, labels = labels, blocks = blocks,
-                          alpha = S.alpha, confusable = S.confusable, z_threshold = thr.z_threshold,
+local thr = thresholds(n_eff(S.replicates), dcands)
+local diag = doe.diagnose{residual = r0, covariance = cov, jacobian = J_diag, candidates = dcands, labels = labels, blocks = blocks,
+                          alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin, z_threshold = thr.z_threshold,
                           q0_threshold = thr.q0_threshold, q_after_threshold = thr.q_after_threshold}
 diag.thresholds = thr
 say("   decision: %s%s (Q0 = %.4g on %s df, p = %.3g)", diag.decision, diag.named and (" - " .. diag.named) or "",
@@ -260,8 +349,16 @@ end
 outcome.signatures, outcome.diagnosis = signatures, diag
 
 -----------------------------------------------------------------------------------------------
--- 4. Add the named effect and recalibrate jointly; confirm at new seeds.
-local named = diag.decision == "effect" and diag.named or nil
+-- 4. Add the named effect and recalibrate jointly; confirm at new seeds. The score test is linear:
+-- a strong effect leaves a large linearised remainder Q0 - z^2 even when it is the whole story.
+-- So when the screening says `unknown` only because of that remainder (a best candidate that
+-- passes, lies in its range and has no rival), the candidate is added and recalibrated too, and
+-- the decision is taken on the misfit left after the nonlinear refit at new seeds: not
+-- significant -> `effect`; still significant -> `unknown`, with the tried effect reported.
+local screening = {decision = diag.decision, reason = diag.reason}
+local no_rival = diag.ambiguous_with == nil or #diag.ambiguous_with == 0
+local tentative = diag.decision == "unknown" and diag.best ~= nil and no_rival
+local named = diag.decision == "effect" and diag.named or (tentative and diag.best) or nil
 local after
 if named then
   local c
@@ -272,26 +369,16 @@ if named then
   if lam <= 0 then lam = c.probe end
   local dims = theta_dims()
   dims[#dims + 1] = {lo = c.low, hi = c.high, get = function(pt) return pt.lambda[named] end,
-                     shift = function(pt, h) local q = copy_point(pt); q.lambda[named] = q.lambda[named] + h; return q end}
-  local lo2, hi2 = {}, {}
-  for j, d in ipairs(dims) do lo2[j], hi2[j] = d.lo, d.hi end
-  local joint = {theta = theta, lambda = lam, iterations = {}}
-  say("4. recalibration with %s (start %.4g)", named, lam)
-  local last
-  for it = 1, math.max(1, S.iterations) do
-    local base = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0, label = "joint " .. it}
-    local f, Jj = jacobian_at("recalibration", base, dims)
-    local r = stack.minus(y, f)
-    local x = {}
-    for j = 1, p do x[j] = joint.theta[j] end
-    x[p + 1] = joint.lambda
-    last = doe.gauss_newton{theta = x, residual = r, jacobian = Jj, covariance = cov, lower = lo2, upper = hi2, damping = 0}
-    local t = {}
-    for j = 1, p do t[j] = last.theta[j] end
-    joint.theta, joint.lambda = t, last.theta[p + 1]
-    joint.iterations[#joint.iterations + 1] = {iteration = it, theta = t, lambda = joint.lambda}
-    say("   iteration %d: %s, %s = %.4g", it, fmt_theta(t), named, joint.lambda)
+                     set = function(pt, v) local q = copy_point(pt); q.lambda[named] = v; return q end}
+  say("4. recalibration with %s (start %.4g)%s", named, lam, tentative and ": tried, its linearised remainder being significant" or "")
+  local history = {}
+  local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov, history)
+  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = {}}
+  for _, h in ipairs(history) do
+    joint.iterations[#joint.iterations + 1] = {iteration = h.iteration, theta = h.point.theta, lambda = h.point.lambda[named],
+                                               rms = h.rms_sigma, accepted = h.accepted, backtrack = h.backtrack}
   end
+  local last = best.step or {}
   local conf_points = {}
   for k = 1, S.confirm_seeds do
     conf_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 200 + k, label = "confirmation " .. k}
@@ -299,12 +386,12 @@ if named then
   local conf, conf_results = evaluate("confirmation", conf_points)
   local f_after = stack.mean(conf)
   local r1 = stack.minus(y, f_after)
-  local noise_after = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = S.confirm_seeds}
+  local noise_after = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = n_eff(S.confirm_seeds)}
   local rest = {}
   for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
-  local thr_after = #rest > 0 and thresholds(S.confirm_seeds, rest) or {}
-  local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J, candidates = rest,
-                                                labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable,
+  local thr_after = #rest > 0 and thresholds(n_eff(S.confirm_seeds), rest) or {}
+  local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J_diag, candidates = rest,
+                                                labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                                 z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
                                                 q_after_threshold = thr_after.q_after_threshold} or nil
   local se = last.se and last.se[p + 1] or 0
@@ -320,10 +407,24 @@ if named then
   local z = {}
   for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
   after.z = z
+  if tentative then
+    if diag_after and not diag_after.q0_significant then
+      diag.decision, diag.named = "effect", named
+      diag.reason = named .. " passes and lies in its range; its linearised remainder was significant, the misfit left after "
+                    .. "adding it and recalibrating (Q0 = " .. string.format("%.4g", diag_after.q0) .. ") is not"
+    else
+      diag.reason = diag.reason .. "; added and recalibrated, it still leaves a significant misfit"
+                    .. (diag_after and string.format(" (Q0 = %.4g)", diag_after.q0) or " (no other candidate to test the remainder with)")
+      outcome.tried, after = after, nil
+      named = nil
+    end
+    say("   decision after the recalibration: %s%s", diag.decision, diag.named and (" - " .. diag.named) or "")
+  end
 else
   say("4. no effect named (%s): nothing to add", diag.decision)
 end
 outcome.after = after
+outcome.screening = screening
 
 -----------------------------------------------------------------------------------------------
 -- 5. Report.

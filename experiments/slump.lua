@@ -318,6 +318,7 @@ paddy.result{
   profile = profile_out,
   history = history.rows,
   profile_mm = profile_grid.h_mm,                  -- h(r) at profile_radii_mm (fixed grid)
+  profile_mean_mm = profile_grid.h_mean_mm,        -- ring-mean height at profile_radii_mm (continuous at the edge)
   profile_radii_mm = profile_grid.radii_mm,
   history_mm = history_grid,                       -- slump at history_times_s after the lift starts
   history_times_s = observables.HISTORY_TIMES,

@@ -47,7 +47,7 @@ NullThresholds bootstrapNullThresholds(const BootstrapNullInput& in) {
   if (in.sigma.size() != 0 && in.sigma.size() != m)
     throw DoeError("sigma: " + std::to_string(in.sigma.size()) + " entries, expected " + std::to_string(m));
   if (in.replicates < 2) throw DoeError("replicates: must be >= 2 (the number of seeds Sigma_seed was estimated from)");
-  if (!(in.nAvg >= 1.0)) throw DoeError("n_avg: must be >= 1");
+  if (!(in.nAvg > 0.0) || !std::isfinite(in.nAvg)) throw DoeError("n_avg: must be > 0");
   if (in.trials < 20) throw DoeError("trials: must be >= 20");
   for (const auto& c : in.candidates)
     if (c.signature.size() != m) throw DoeError("candidates (" + c.name + ").signature: needs " + std::to_string(m) + " entries");

@@ -58,8 +58,8 @@ NoiseCovariance noiseCovariance(const Eigen::MatrixXd& X, const Eigen::VectorXd&
                    std::to_string(m) + " observables (columns)");
   if (sigma.size() && (!sigma.allFinite() || (sigma.array() < 0).any()))
     throw DoeError("sigma: every measurement standard deviation must be finite and >= 0");
-  if (!(nAvg >= 1.0) || !std::isfinite(nAvg))
-    throw DoeError("n_avg: must be >= 1 (number of seeds averaged), got " + std::to_string(nAvg));
+  if (!(nAvg > 0.0) || !std::isfinite(nAvg))
+    throw DoeError("n_avg: must be > 0 (effective number of seeds averaged), got " + std::to_string(nAvg));
   NoiseCovariance out;
   Eigen::VectorXd sd;
   const Eigen::MatrixXd Z = standardised(X, sd);

@@ -51,6 +51,8 @@ void checkInput(const DiagnoseInput& in) {
   if (!(o.confusable > 0 && o.confusable <= 1))
     throw DoeError("confusable: must be in (0, 1], got " + std::to_string(o.confusable));
   if (!(o.bayesMargin >= 1)) throw DoeError("bayes_margin: must be >= 1, got " + std::to_string(o.bayesMargin));
+  if (!(o.strongMargin >= o.bayesMargin))
+    throw DoeError("strong_margin: must be >= bayes_margin (" + std::to_string(o.bayesMargin) + "), got " + std::to_string(o.strongMargin));
   if (!(o.absorbedTolerance >= 0 && o.absorbedTolerance < 1))
     throw DoeError("absorbed_tolerance: must be in [0, 1), got " + std::to_string(o.absorbedTolerance));
   if (!(o.minRangeZ >= 0)) throw DoeError("min_range_z: must be >= 0");
@@ -197,8 +199,10 @@ Diagnosis diagnose(const DiagnoseInput& in) {
     for (std::size_t l = 0; l < d.candidates.size(); ++l) {
       if (static_cast<int>(l) == best || !d.candidates[l].plausible) continue;
       const double c = st.confusability(best, static_cast<Eigen::Index>(l));
-      const bool closeEvidence = b.score_rank - d.candidates[l].score_rank < std::log(o.bayesMargin);
-      if (c >= o.confusable || closeEvidence) rivals.push_back(static_cast<int>(l));
+      const double logRatio = b.score_rank - d.candidates[l].score_rank;
+      const bool closeEvidence = logRatio < std::log(o.bayesMargin);
+      const bool confusableUndecided = c >= o.confusable && logRatio < std::log(o.strongMargin);
+      if (closeEvidence || confusableUndecided) rivals.push_back(static_cast<int>(l));
     }
     std::sort(rivals.begin(), rivals.end(),
               [&](int x, int y) { return d.candidates[static_cast<std::size_t>(x)].score_rank > d.candidates[static_cast<std::size_t>(y)].score_rank; });
@@ -232,7 +236,7 @@ Diagnosis diagnose(const DiagnoseInput& in) {
     } else {
       d.decision = "effect";
       d.named = d.best;
-      d.reason = d.best + " passes, lies in its physical range, has no confusable rival and leaves no significant misfit";
+      d.reason = d.best + " passes, lies in its physical range, has no rival the data cannot tell from it and leaves no significant misfit";
     }
   }
 

@@ -173,6 +173,7 @@ DiagnoseInput diagnoseInputFromJson(const json& o) {
   num("alpha_after", opt.alphaAfter);
   num("confusable", opt.confusable);
   num("bayes_margin", opt.bayesMargin);
+  num("strong_margin", opt.strongMargin);
   num("absorbed_tolerance", opt.absorbedTolerance);
   num("min_range_z", opt.minRangeZ);
   auto opt_num = [&](const char* key, std::optional<double>& field) {

@@ -159,7 +159,7 @@ TrialCounts runTrials(const TrialModel& model, const TrialScenario& sc, int tria
   }
   if (sc.truth == "none") c.expected = c.none;
   else if (sc.truth == "outside") c.expected = c.unknown;
-  else if (confusablePair) c.expected = c.ambiguousWithTruth;
+  else if (confusablePair) c.expected = c.ambiguousWithTruth + c.correct;  // both right: never the rival alone
   else c.expected = c.correct;
   return c;
 }

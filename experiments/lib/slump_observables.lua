@@ -14,7 +14,9 @@ local M = {}
 
 -- Profile: bins of PROFILE_BIN from the axis to PROFILE_R_MAX (12 bins, centres 12.5 ... 287.5 mm);
 -- the height of a bin is the median over its angular cells of the highest sphere top (0 where no
--- sphere is: the plate), sim:measure_profile (docs/experiments.md).
+-- sphere is: the plate), sim:measure_profile (docs/experiments.md); h_mean_mm is the mean over the
+-- cells instead (volume per area of the ring), which moves continuously as the pile's edge crosses
+-- a ring where the median jumps between 0 and a sphere's height.
 M.PROFILE_BIN = 0.025
 M.PROFILE_R_MAX = 0.3
 -- Slump history: seconds after the start of the lift. After the run stopped (pile at rest) the
@@ -24,11 +26,11 @@ M.HISTORY_TIMES = {0.25, 0.5, 0.75, 1.0, 1.5, 2.0, 3.0}
 function M.profile(sim)
   local bins = sim:measure_profile{axis = {0, 0}, base_z = 0, bin_width = M.PROFILE_BIN, r_max = M.PROFILE_R_MAX,
                                    largest_cluster = true}
-  local radii, h = {}, {}
+  local radii, h, h_mean = {}, {}, {}
   for k, b in ipairs(bins) do
-    radii[k], h[k] = b.r * 1000, b.h * 1000
+    radii[k], h[k], h_mean[k] = b.r * 1000, b.h * 1000, b.h_mean * 1000
   end
-  return {radii_mm = radii, h_mm = h}
+  return {radii_mm = radii, h_mm = h, h_mean_mm = h_mean}
 end
 
 -- Slump [mm] of history rows ({t =, slump_mm =}, t ascending) at each of `times`, linearly

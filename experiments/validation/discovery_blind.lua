@@ -18,6 +18,8 @@ local score = require("lib.discovery.score")
 
 local P = paddy.parameters{
   {name = "tiny", default = false, description = "CI variant: 2 trials (a strong hidden candidate, a null), one slump experiment, very coarse spheres"},
+  {name = "strong", default = "wall_adhesion", description = "the candidate the tiny version hides at the top of its range ('' = drawn from the trial's seed)"},
+  {name = "small", default = false, description = "tiny's spheres, experiment and settings with the trial counts of effect_trials, null_trials, outside_trials (a confusion matrix in an hour or two)"},
   {name = "effect_trials", default = 30, type = "integer", min = 0, max = 1000, description = "trials with a hidden candidate effect"},
   {name = "null_trials", default = 20, type = "integer", min = 0, max = 1000, description = "trials with nothing missing"},
   {name = "outside_trials", default = 10, type = "integer", min = 0, max = 1000, description = "trials with an effect outside the candidate list"},
@@ -60,33 +62,47 @@ local free = {{parameter = "jkr_surface_energy", low = 0.05, high = 0.3}}
 
 -- Experiments and observables with their measurement sd (abs in the key's unit, rel of the value:
 -- sd = max(abs, rel |value|)).
-local OBS = {{key = "slump_mm", abs = 3}, {key = "slump_flow_mm", abs = 6}, {key = "profile_mm", abs = 4},
+-- The profile is the ring-mean height (profile_mean_mm): the median height of a ring (profile_mm)
+-- jumps from 0 to a sphere's height as the pile's edge crosses it, a step no seed scatter of the
+-- replicates measures.
+local OBS = {{key = "slump_mm", abs = 3}, {key = "slump_flow_mm", abs = 6}, {key = "profile_mean_mm", abs = 4},
              {key = "history_mm", abs = 4}, {key = "cone_force_N.mean", abs = 0.3, rel = 0.1}}
 local common = {settle_max_time = 1.5, min_rest_time = 0.2, max_time = 4}
 local experiments = {{name = "slump_slow", script = "slump.lua", set = {lift_speed = 0.1}},
                      {name = "slump_fast", script = "slump.lua", set = {lift_speed = 0.4}}}
 local n_effect, n_null, n_outside = P.effect_trials, P.null_trials, P.outside_trials
 local d_work, d_truth = P.particle_diameter, P.truth_diameter
-local settings = {iterations = 2, replicates = 5, signature_seeds = 2, confirm_seeds = 2}
-if P.tiny then
-  n_effect, n_null, n_outside = 1, 1, 0
+-- measured_repeats = 1: each measurement is one truth run, so it carries one seed's scatter on top
+-- of the measurement noise (the specimen scatter of a single test). resolution_factor: the
+-- workflow's own check of its resolution bias, a generic 0.9 x its diameter (it is not told the truth's).
+local settings = {iterations = 5, replicates = 5, signature_seeds = 2, confirm_seeds = 2, measured_repeats = 1,
+                  resolution_factor = 0.9, resolution_seeds = 2}
+if P.tiny and P.small then error("discovery_blind.lua: tiny and small exclude each other", 0) end
+if P.tiny or P.small then
+  if P.tiny then n_effect, n_null, n_outside = 1, 1, 0 end
   if d_work == 0.016 then d_work = 0.025 end
   if d_truth == 0.014 then d_truth = 0.023 end
   experiments = {{name = "slump", script = "slump.lua", set = {lift_speed = 0.3}}}
-  settings = {iterations = 1, replicates = 5, signature_seeds = 1, confirm_seeds = 2}
+  settings = {iterations = 5, replicates = 5, signature_seeds = 1, confirm_seeds = 2, measured_repeats = 1,
+              resolution_factor = 0.9, resolution_seeds = 2}
 end
 for _, e in ipairs(experiments) do for k, v in pairs(common) do e.set[k] = v end end
 
--- Trials in a fixed order by kind, their truths drawn from their seeds.
+-- Trials in a fixed order, their truths drawn from their seeds.
 local trials = {}
 local function add_trial(kind)
   local no = P.first_trial + #trials
   trials[#trials + 1] = {no = no, kind = kind, seed = 7919 * no + 17}
 end
+-- The kinds take turns (effect, null, outside, effect, ...), so that a benchmark stopped early has
+-- trials of every kind.
 if P.tiny then add_trial("strong") end
-for _ = 1, (P.tiny and 0 or n_effect) do add_trial("candidate") end
-for _ = 1, n_null do add_trial("none") end
-for _ = 1, n_outside do add_trial("outside") end
+local n_cand = P.tiny and 0 or n_effect
+for i = 1, math.max(n_cand, n_null, n_outside) do
+  if i <= n_cand then add_trial("candidate") end
+  if i <= n_null then add_trial("none") end
+  if i <= n_outside then add_trial("outside") end
+end
 
 local function draw_truth(t)
   math.randomseed(t.seed)
@@ -98,6 +114,11 @@ local function draw_truth(t)
   for _, c in ipairs(set.candidates) do truth.params[c.parameter] = 0 end
   if truth.kind == "candidate" then
     local c = set.candidates[math.random(#set.candidates)]
+    if t.kind == "strong" and P.strong ~= "" then
+      c = nil
+      for _, x in ipairs(set.candidates) do if x.name == P.strong then c = x end end
+      if not c then error(string.format("discovery_blind.lua: strong = '%s' is not a candidate of candidate_set '%s'", P.strong, P.candidate_set), 0) end
+    end
     -- strengths from barely to clearly detectable: 15 % ... 100 % of the range (strong: the top)
     local s = t.kind == "strong" and c.high or c.high * (0.15 + 0.85 * math.random())
     truth.name, truth.strength, truth.params[c.parameter] = c.name, s, s

@@ -63,7 +63,16 @@ TEST_CASE("discovery/covariance: errors", "[doe][discovery]") {
   CHECK_THROWS_WITH(noiseCovariance(X, Eigen::VectorXd(), 1.0), Catch::Contains("observable 2 has zero variance"));
   CHECK_NOTHROW(noiseCovariance(X, Eigen::Vector2d(0.1, 0.1), 1.0));
   CHECK_THROWS_WITH(noiseCovariance(X, Eigen::Vector3d(1, 1, 1), 1.0), Catch::Contains("sigma: 3 entries"));
-  CHECK_THROWS_WITH(noiseCovariance(X, Eigen::Vector2d(1, 1), 0.5), Catch::Contains("n_avg"));
+  CHECK_THROWS_WITH(noiseCovariance(X, Eigen::Vector2d(1, 1), 0.0), Catch::Contains("n_avg: must be > 0"));
+  CHECK_THROWS_WITH(noiseCovariance(X, Eigen::Vector2d(1, 1), -1.0), Catch::Contains("n_avg"));
+  // An effective count below 1 (a measurement with seed-like scatter of its own) is allowed and
+  // scales the seed part alone: Sigma = diag(sigma^2) + Sigma_seed / n_avg.
+  Eigen::MatrixXd Y(3, 2);
+  Y << 1, 4, 2, 5, 3, 7;
+  const auto one = noiseCovariance(Y, Eigen::Vector2d(0.5, 0.5), 1.0);
+  const auto half = noiseCovariance(Y, Eigen::Vector2d(0.5, 0.5), 0.5);
+  CHECK((half.covariance - Eigen::Matrix2d::Identity() * 0.25 - 2.0 * (one.covariance - Eigen::Matrix2d::Identity() * 0.25))
+            .cwiseAbs().maxCoeff() < 1e-12);
   Eigen::Matrix2d S;
   S << 1, 2, 2, 1;
   CHECK_THROWS_WITH(Whitening(S), Catch::Contains("not positive definite (smallest eigenvalue -1"));

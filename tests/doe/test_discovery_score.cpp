@@ -211,6 +211,29 @@ TEST_CASE("discovery: nearly parallel candidates are ambiguous; the separating b
   CHECK(d.blockSeparations[2].tCriterion > 3.0 * std::max(d.blockSeparations[0].tCriterion, d.blockSeparations[1].tCriterion));
 }
 
+TEST_CASE("discovery: a confusable rival is set aside only on strong evidence (strong_margin)", "[doe][discovery]") {
+  LinearModel lm;
+  const Eigen::VectorXd gC = gaussian(lm.rng, lm.m);
+  Eigen::VectorXd gD = gC;
+  gD.tail(10) += 0.35 * gaussian(lm.rng, 10);
+  DiagnoseInput in = lm.input(8.0 * gC);  // a large C: z_C - z_D is many times its noise sd
+  in.candidates = {lm.candidate("C", gC), lm.candidate("D", gD)};
+  const Diagnosis strong = diagnose(in);
+  REQUIRE(strong.confusability(0, 1) > 0.9);
+  INFO(strong.reason);
+  CHECK(strong.decision == "effect");
+  CHECK(strong.named == "C");
+  // The same data with a margin no evidence can reach: the pair stays ambiguous, C listed first.
+  in.options.strongMargin = 1e300;
+  const Diagnosis strict = diagnose(in);
+  CHECK(strict.decision == "ambiguous");
+  REQUIRE(strict.ambiguousWith.size() == 2);
+  CHECK(strict.ambiguousWith[0] == "C");
+  // A margin below the "positive" one is refused, naming the field.
+  in.options.strongMargin = 2.0;
+  CHECK_THROWS_WITH(diagnose(in), Catch::Contains("strong_margin"));
+}
+
 TEST_CASE("discovery: a missing term orthogonal to every candidate is unknown", "[doe][discovery]") {
   LinearModel lm;
   Eigen::MatrixXd G(lm.m, 2);

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <numbers>
+#include <vector>
 
 using namespace paddy::measure;
 using paddy::InputError;
@@ -94,6 +96,38 @@ TEST_CASE("measure: pile profile of a cone follows its analytic line", "[measure
   const auto wide = pileProfile(pile.x, pile.r, o);
   CHECK(wide.back().height == 0.0);
   CHECK(wide.back().coverage == 0.0);
+  CHECK(wide.back().mean_height == 0.0);
+}
+
+TEST_CASE("measure: the ring-mean height of the profile moves with the pile's edge, the median jumps", "[measure][profile]") {
+  // One ring (r 0.1 ... 0.11 m) of equal spheres on the plate covering an arc of angle phi:
+  // mean height = d * (cells holding a sphere) / cells, near d * phi / 2 pi; the median is 0 below
+  // half coverage and d above.
+  const double rad = 0.105, dd = 0.004;
+  ProfileOptions o;
+  o.bin_width = 0.01;
+  o.r_max = 0.11;
+  o.cell_arc = 0.01;
+  double last_mean = -1.0;
+  for (double frac : {0.1, 0.3, 0.45, 0.55, 0.7, 0.9}) {
+    std::vector<Vec3> x;
+    std::vector<double> r;
+    const int n = static_cast<int>(frac * 2 * std::numbers::pi * rad / (dd / 2));
+    for (int i = 0; i < n; ++i) {
+      const double phi = (i + 0.5) * (dd / 2) / rad;
+      x.emplace_back(rad * std::cos(phi), rad * std::sin(phi), dd / 2);
+      r.push_back(dd / 2);
+    }
+    const auto bins = pileProfile(x, r, o);
+    const auto& ring = bins.back();
+    INFO("covered fraction " << frac << ": mean " << ring.mean_height << ", median " << ring.height << ", coverage " << ring.coverage);
+    CHECK(ring.r_inner == Approx(0.1));
+    CHECK(ring.mean_height == Approx(dd * ring.coverage).epsilon(1e-12));
+    CHECK(ring.coverage == Approx(frac).margin(2.0 / static_cast<double>(ring.cells)));
+    CHECK(ring.height == (ring.coverage > 0.5 ? Approx(dd) : Approx(0.0)));
+    CHECK(ring.mean_height > last_mean);
+    last_mean = ring.mean_height;
+  }
 }
 
 TEST_CASE("measure: connected clusters", "[measure][slump]") {

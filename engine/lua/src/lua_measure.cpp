@@ -241,11 +241,12 @@ int measureProfile(lua_State* L) {
   const auto bins = pm::pileProfile(p.x, p.r, o);
   lua_createtable(L, static_cast<int>(bins.size()), 0);
   for (std::size_t k = 0; k < bins.size(); ++k) {
-    lua_createtable(L, 0, 7);
+    lua_createtable(L, 0, 8);
     setNumber(L, "r_inner", bins[k].r_inner);
     setNumber(L, "r_outer", bins[k].r_outer);
     setNumber(L, "r", bins[k].r_centre);
     setNumber(L, "h", bins[k].height);
+    setNumber(L, "h_mean", bins[k].mean_height);
     setNumber(L, "coverage", bins[k].coverage);
     setInteger(L, "particles", static_cast<long long>(bins[k].particles));
     setInteger(L, "cells", static_cast<long long>(bins[k].cells));

@@ -129,9 +129,12 @@ std::vector<ProfileBin> pileProfile(const std::vector<Vec3>& x, const std::vecto
   }
   for (std::size_t b = 0; b < nbins; ++b) {
     std::size_t filled = 0;
+    double sum = 0.0;
     for (double& t : cell_top[b]) {
       if (std::isinf(t)) t = 0.0; else ++filled;
+      sum += t;
     }
+    bins[b].mean_height = sum / static_cast<double>(bins[b].cells);
     bins[b].coverage = static_cast<double>(filled) / static_cast<double>(bins[b].cells);
     bins[b].height = quantile(cell_top[b], o.cell_quantile);
   }

@@ -107,6 +107,13 @@ function M.read(path)
   -- Optional workflow settings (defaults in docs/discovery.md).
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
+  local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge"}
+  local allowed_set = {}
+  for _, k in ipairs(allowed) do allowed_set[k] = true end
+  for k in pairs(s) do
+    if not allowed_set[k] then fail(path, string.format("unknown key 'settings.%s' (allowed: %s)", tostring(k), table.concat(allowed, ", "))) end
+  end
   local S = {}
   S.iterations = number(path, "settings.iterations", s.iterations or 3, 0, 20)
   S.replicates = number(path, "settings.replicates", s.replicates or 5, 5, 50)
@@ -115,6 +122,7 @@ function M.read(path)
   S.fd_step = number(path, "settings.fd_step", s.fd_step or 0.1, 1e-4, 0.5)
   S.alpha = number(path, "settings.alpha", s.alpha or 0.05, 1e-6, 0.5)
   S.confusable = number(path, "settings.confusable", s.confusable or 0.9, 0.5, 1)
+  S.strong_margin = number(path, "settings.strong_margin", s.strong_margin or 20, 3, 1e6)
   -- Thresholds of the decision: bootstrap (null trials of the fitted noise model, which knows
   -- that Sigma was estimated from few seeds; doe/include/paddy/doe/bootstrap_null.hpp) or the
   -- chi^2 / normal tables with Holm (right only when Sigma is known).
@@ -123,6 +131,21 @@ function M.read(path)
     fail(path, string.format("settings.thresholds = '%s': allowed bootstrap, tables", tostring(S.thresholds)))
   end
   S.bootstrap_trials = number(path, "settings.bootstrap_trials", s.bootstrap_trials or 2000, 100, 100000)
+  -- Specimen scatter: the measured values are means of measured_repeats specimens and sigma is the
+  -- instrument's alone; the workflow then adds the specimen-to-specimen scatter, taken to be the
+  -- model's seed scatter, / measured_repeats (0: sigma already holds it, nothing is added).
+  S.measured_repeats = number(path, "settings.measured_repeats", s.measured_repeats or 0, 0, 1000)
+  -- Resolution bias: runs at resolution_factor x the particle diameter (0: none) give the direction in which
+  -- the observables move as the model is refined; it is projected out like a free parameter.
+  S.resolution_factor = number(path, "settings.resolution_factor", s.resolution_factor or 0, 0, 0.99)
+  if S.resolution_factor > 0 and S.resolution_factor < 0.5 then
+    fail(path, string.format("settings.resolution_factor = %g: allowed 0 (off) or 0.5 to 0.99", S.resolution_factor))
+  end
+  S.resolution_seeds = number(path, "settings.resolution_seeds", s.resolution_seeds or 3, 1, 50)
+  -- Step control of the calibration: a Gauss-Newton step that raises the misfit is halved, at most backtracks times.
+  S.backtracks = number(path, "settings.backtracks", s.backtracks or 2, 0, 10)
+  -- ... and stops early when the next step would move no parameter by more than converge x its range.
+  S.converge = number(path, "settings.converge", s.converge or 0.01, 0, 0.5)
   input.settings = S
   return input
 end

@@ -61,6 +61,10 @@ function M.summary(o, files)
     misfit_statistic_before = d.misfit,
     misfit_statistic_after = a and a.diagnosis and a.diagnosis.misfit or nil,
     decision_after = a and a.diagnosis and a.diagnosis.decision or nil,
+    screening_decision = o.screening and o.screening.decision or d.decision,
+    reason = d.reason,
+    tried_effect = o.tried and {name = d.best, strength = o.tried.strength, misfit_after = o.tried.rms,
+                                q0_after = o.tried.diagnosis and o.tried.diagnosis.q0 or nil} or nil,
     comparison = a and a.comparison or nil,
     candidates = cands,
     signatures = signatures,
@@ -68,7 +72,10 @@ function M.summary(o, files)
     calibrated = theta,
     recalibrated = theta_after,
     residuals = residuals,
-    noise = {shrinkage = o.located.noise.shrinkage, seed_sd = o.located.noise.seed_sd},
+    noise = {shrinkage = o.located.noise.shrinkage, seed_sd = o.located.noise.seed_sd,
+             measured_repeats = o.input.settings.measured_repeats},
+    resolution = o.resolution,
+    calibration = o.calibration.iterations,
     simulations = #o.simulations,
     wall_time_s = o.wall_time_s,
     particle_diameter = o.parameters.particle_diameter,
@@ -186,9 +193,18 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
   for _, it in ipairs(o.calibration.iterations) do
     local t = {}
     for j, f in ipairs(o.input.free_parameters) do t[#t + 1] = esc(f.parameter) .. " = " .. num(it.theta[j]) end
-    rows[#rows + 1] = {num(it.iteration), table.concat(t, ", "), num(it.rms_sigma)}
+    rows[#rows + 1] = {num(it.iteration) .. ((it.backtrack or 0) > 0 and string.format(" (step halved %d×)", it.backtrack) or ""),
+                       table.concat(t, ", "), num(it.rms_sigma), it.accepted == false and "rejected" or "accepted"}
   end
-  add(table_html({"iteration", "parameters", "RMS residual [measurement sd], one seed"}, rows, "Gauss-Newton on forward differences, common random numbers"))
+  add(table_html({"iteration", "parameters", "RMS residual [measurement sd], one seed", "step"}, rows,
+                 "Gauss-Newton on forward differences, common random numbers; a step that raises the misfit is halved"))
+  if o.resolution then
+    rows = {}
+    for _, r in ipairs(o.resolution.shift) do rows[#rows + 1] = {esc(r.label), num(r.shift), num(r.z, 3)} end
+    add(table_html({"observable", "shift", "shift [noise sd]"}, rows,
+                   string.format("Resolution bias: the observables at %s m minus at the workflow's diameter (RMS %s noise sd), projected out like a free parameter",
+                                 num(o.resolution.diameter), num(o.resolution.rms))))
+  end
 
   add('<h2>2. Where the model misses</h2>')
   add(figure(figs.residuals, "Standardised residual of every observable before (calibrated) and after (named effect added and recalibrated); dashed: ±2"))

@@ -37,7 +37,7 @@ struct BootstrapNullInput {
   Eigen::VectorXd sigma;             ///< m measurement standard deviations (empty: all 0)
   Eigen::MatrixXd seedCovariance;    ///< m x m, Sigma_seed of one replicate (NoiseCovariance::seedCovariance)
   int replicates = 0;                ///< n replicate seeds the workflow used to estimate it (>= 2)
-  double nAvg = 1.0;                 ///< the simulated value is the mean of n_avg seeds
+  double nAvg = 1.0;                 ///< effective seeds behind a residual (> 0; see noiseCovariance)
   int trials = 2000;                 ///< bootstrap null trials (>= 20)
   std::uint64_t seed = 1;
   DecisionOptions options;           ///< alpha and the rule's other settings (thresholds ignored)

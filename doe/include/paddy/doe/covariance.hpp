@@ -32,7 +32,8 @@ struct NoiseCovariance {
 };
 
 /// replicates: n x m (n >= 2, finite); sigma: m measurement standard deviations (>= 0, may be
-/// empty = all 0); nAvg >= 1. Throws DoeError naming the field when an input is invalid or when an
+/// empty = all 0); nAvg > 0 (the effective number of seeds: below 1 when the measurement
+/// carries seed-like scatter of its own, 1/n_avg = 1/replicates + 1/measured_repeats). Throws DoeError naming the field when an input is invalid or when an
 /// observable has neither seed scatter nor measurement sigma (Sigma would be singular).
 NoiseCovariance noiseCovariance(const Eigen::MatrixXd& replicates, const Eigen::VectorXd& sigma,
                                 double nAvg = 1.0);

@@ -21,8 +21,10 @@
 //  3. A passing candidate is *plausible* when its interval lambda^ +- z_{1-alpha/2} se meets
 //     [low, high]. The best plausible candidate k* is the one with the largest log Bayes factor
 //     (score_test.hpp; z^2/2 where no prior scale is known).
-//  4. `ambiguous` if another plausible candidate has c(k*, l) >= confusable or a Bayes factor
-//     within a factor bayes_margin of k*'s; ambiguous_with lists them (k* first) and
+//  4. `ambiguous` if another plausible candidate has a Bayes factor within a factor bayes_margin
+//     of k*'s, or is confusable with it (c(k*, l) >= confusable) and its Bayes factor is within a
+//     factor strong_margin of k*'s: for signatures that look alike the data must give strong
+//     evidence (Kass & Raftery 1995: B > 20) to name one of them. ambiguous_with lists them (k* first) and
 //     separating_block names the block (experiment) that best tells k* from its first rival.
 //     `unknown` if Q0 is significant but no candidate passes, if no passing candidate is
 //     plausible, or if Q_k* is still significant (chi^2(m - rank J - 1) at alpha_after).
@@ -59,6 +61,7 @@ struct DecisionOptions {
   double alphaAfter = 0.05;       ///< level of the misfit left after the named effect
   double confusable = 0.9;        ///< |cos| of projected signatures above which two are confusable
   double bayesMargin = 3.0;       ///< BF(k*) / BF(rival) needed to name k* (Kass–Raftery "positive")
+  double strongMargin = 20.0;     ///< BF(k*) / BF(rival) needed over a confusable rival (Kass–Raftery "strong")
   double absorbedTolerance = 0.05;  ///< |P g| / |g| below this: absorbed by recalibration
   double minRangeZ = 1.0;         ///< high sqrt(a) below this: no sensitivity in the physical range
   std::optional<double> zThreshold, q0Threshold, qAfterThreshold;  ///< empirical thresholds

@@ -61,7 +61,10 @@ struct ProfileOptions {
 
 struct ProfileBin {
   double r_inner = 0.0, r_outer = 0.0, r_centre = 0.0;  // [m]
-  double height = 0.0;     // surface height h(r) above base_z [m]
+  double height = 0.0;     // surface height h(r) above base_z [m]: the cell_quantile of the cells' tops
+  double mean_height = 0.0;  // mean of the cells' tops (0 for an empty cell) [m]: the ring's volume per
+                             // area; moves continuously as the pile's edge crosses the ring, where the
+                             // quantile jumps between 0 and a sphere's height
   double coverage = 0.0;   // fraction of the ring's cells holding a particle centre
   std::size_t particles = 0;
   std::size_t cells = 0;
