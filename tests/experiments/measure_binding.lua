@@ -91,7 +91,9 @@ near("relative errors max", e.max, 0.1, 1e-12)
 -- Coarse graining α = 5 (10 mm from 2 mm): only the surface energy (and sizes) change.
 local scaled, rows = paddy.coarse_grain{alpha = 5, params = {jkr_surface_energy = 0.096, mud_mud_friction = 0.15,
   mud_mud_rolling_friction = 0.125, mud_steel_restitution = 0.3, particle_diameter = 0.002, lift_speed = 0.05},
-  laws = {lift_speed = 0}}
+  laws = {jkr_surface_energy = "surface_energy", mud_mud_friction = "friction",
+          mud_mud_rolling_friction = "rolling_friction", mud_steel_restitution = "restitution",
+          particle_diameter = "diameter", lift_speed = 0}}
 near("scaled surface energy", scaled.jkr_surface_energy, 0.48, 1e-12)
 near("scaled friction", scaled.mud_mud_friction, 0.15, 0)
 near("scaled rolling friction", scaled.mud_mud_rolling_friction, 0.125, 0)
@@ -104,6 +106,11 @@ check("changed rows: " .. table.concat(changed, ","),
 check("same table from require", measure.coarse_grain ~= nil and #measure.scaling_laws() >= 10)
 local unknown_ok, unknown_msg = pcall(paddy.coarse_grain, {alpha = 2, params = {lift_speed = 1}})
 check("unknown parameter refused", not unknown_ok and tostring(unknown_msg):find("lift_speed", 1, true))
+-- No law is guessed from a name: a parameter ending in a law's name still needs its law declared.
+local undeclared_ok, undeclared_msg = pcall(paddy.coarse_grain, {alpha = 2, params = {mud_mud_friction = 0.15}})
+check("undeclared law refused: " .. tostring(undeclared_msg), not undeclared_ok and
+      tostring(undeclared_msg):find("parameter 'mud_mud_friction' has no scaling law", 1, true) and
+      tostring(undeclared_msg):find("laws = {mud_mud_friction = ...}", 1, true))
 near("rayleigh time ratio", measure.rayleigh_time(0.005, 1680, 1e6, 0.5) / measure.rayleigh_time(0.001, 1680, 1e6, 0.5), 5, 1e-12)
 
 -- Rheometer criteria and yield stresses through Lua (closed forms in tests/measure/).

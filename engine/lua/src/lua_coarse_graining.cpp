@@ -1,10 +1,9 @@
 // Lua bindings of coarse graining (paddy::measure::CoarseGraining, docs/measurement.md):
 //   paddy.coarse_grain{alpha=, params={...}, laws={name = exponent | {exponent=, reason=} |
-//                      "law name"}} → scaled params, rows (one per parameter). A law name is
+//                      "law name"}} → scaled params, rows (one per parameter). Every parameter
+//                      needs its law in `laws` (no law is guessed from its name). A law name is
 //                      first looked up among the registered contact sub-models' parameters (the
-//                      law each declares in its ParamSpec), then among the built-in laws; a
-//                      parameter without a law falls back to the built-in law whose name is its
-//                      longest '_' suffix (kept for scripts that give no laws).
+//                      law each declares in its ParamSpec), then among the built-in laws.
 //   require("paddy.measure").coarse_grain, .scaling_laws (measure_module.hpp).
 #include "lua_util.hpp"
 #include "measure_module.hpp"
@@ -30,20 +29,6 @@ namespace pm = paddy::measure;
 
 // ---- coarse graining ----------------------------------------------------------------------------
 
-// The built-in law whose name is the longest suffix of `name` ("mud_mud_rolling_friction" →
-// rolling_friction, "jkr_surface_energy" → surface_energy, "particle_diameter" → diameter).
-const pm::ScalingLaw* lawBySuffix(const std::string& name) {
-  const pm::ScalingLaw* best = nullptr;
-  for (const auto& l : pm::CoarseGraining::laws()) {
-    const std::string& s = l.name;
-    const bool whole = name == s;
-    const bool suffix = name.size() > s.size() + 1 && name.compare(name.size() - s.size(), s.size(), s) == 0 &&
-                        name[name.size() - s.size() - 1] == '_';
-    if ((whole || suffix) && (!best || s.size() > best->name.size())) best = &l;
-  }
-  return best;
-}
-
 // The coarse-graining law a registered contact sub-model declares for its parameter `param`
 // (ParamSpec::coarse_graining_exponent, beside the model that defines the parameter).
 std::optional<pm::ScalingLaw> declaredContactLaw(lua_State* L, const std::string& param) {
@@ -64,7 +49,7 @@ std::optional<pm::ScalingLaw> declaredContactLaw(lua_State* L, const std::string
 int coarseGrain(lua_State* L) {
   OptionTable opt(L, 1, "coarse_grain");
   const double alpha = opt.number("alpha");
-  // Explicit laws first.
+  // The laws the script declares (every parameter needs one).
   std::map<std::string, pm::ScalingLaw> explicit_laws;
   std::map<std::string, std::string> law_names;  // parameter → law name given as a string
   if (opt.push("laws") != LUA_TNIL) {
@@ -119,18 +104,17 @@ int coarseGrain(lua_State* L) {
   std::map<std::string, std::string> law_of;  // parameter → law it follows
   for (const auto& [name, value] : params) {
     (void)value;
-    if (auto it = explicit_laws.find(name); it != explicit_laws.end()) {
-      extra.push_back(it->second);
-      law_of[name] = law_names.count(name) ? law_names[name] : "given";
-    } else if (const pm::ScalingLaw* l = lawBySuffix(name)) {
-      if (l->name != name) extra.push_back({name, l->exponent, l->name + ": " + l->reason});
-      law_of[name] = l->name;
-    } else {
+    const auto it = explicit_laws.find(name);
+    if (it == explicit_laws.end()) {
       std::string known;
       for (const auto& l : pm::CoarseGraining::laws()) known += (known.empty() ? "" : ", ") + l.name;
-      throw InputError("coarse_grain: no scaling law for parameter '" + name + "' (known, also as a suffix " +
-                       "'<prefix>_<law>': " + known + "); pass laws = {" + name + " = exponent}");
+      throw InputError("coarse_grain: parameter '" + name + "' has no scaling law; declare it in laws = {" + name +
+                       " = ...}: an exponent k (p_cg = alpha^k p_ref), {exponent =, reason =}, the name of a "
+                       "contact sub-model parameter whose declared law it follows, or a built-in law (" +
+                       known + ")");
     }
+    extra.push_back(it->second);
+    law_of[name] = law_names.count(name) ? law_names[name] : "given";
   }
   const pm::ScaledParameters s = pm::scaleParameters(params, alpha, extra);
   lua_createtable(L, 0, static_cast<int>(s.values.size()));
