@@ -12,6 +12,7 @@
 -- cg_summary.csv, cg_tests.csv, cg_profiles.dat, cg_study.json, cg_sizes.png, cg_profiles.png,
 -- result.json.
 local util = require("lib.util")
+local measured = require("lib.reference_measurement").slump()  -- slump and slump-flow of the calibration input
 local report = require("report")
 
 local P = paddy.parameters{
@@ -199,14 +200,15 @@ set lmargin at screen 0.1; set rmargin at screen 0.7
 set ylabel 'slump [mm]'
 plot '%s' using 1:2 with points pt 6 ps 1.2 lc rgb '#888888' title 'runs', \
      '%s' using 1:2:3 with yerrorlines pt 7 lw 2 lc rgb '#cc6644' title 'mean +- std', \
-     231 with lines dt 2 lc rgb 'black' title 'measured 231'
+     %g with lines dt 2 lc rgb 'black' title 'measured %g'
 set ylabel 'slump-flow [mm]'; set xlabel 'particle diameter d [mm] (reference 2 mm)'
 plot '%s' using 1:3 with points pt 6 ps 1.2 lc rgb '#888888' title 'runs (circle fit)', \
      '%s' using 1:4:5 with yerrorlines pt 7 lw 2 lc rgb '#cc6644' title 'circle fit', \
      '%s' using 1:6:7 with yerrorlines pt 5 lw 1 dt 3 lc rgb '#4477aa' title 'ruler (GB/T)', \
-     480 with lines dt 2 lc rgb 'black' title 'measured 480'
+     %g with lines dt 2 lc rgb 'black' title 'measured %g'
 unset multiplot]], util.out("cg_sizes.png"), xr, util.out("cg_points.dat"), util.out("cg_means.dat"),
-    util.out("cg_points.dat"), util.out("cg_means.dat"), util.out("cg_means.dat")))
+    measured.slump_mm, measured.slump_mm, util.out("cg_points.dat"), util.out("cg_means.dat"), util.out("cg_means.dat"),
+    measured.slump_flow_mm, measured.slump_flow_mm))
   if blocks > 0 then
     local plots = {}
     for k, d in ipairs(prof_lines) do
