@@ -64,6 +64,10 @@ TEST_CASE("an exploding contact is caught before it explodes", "[engine][errors]
     FAIL("no instability reported");
   } catch (const InstabilityError& e) {
     REQUIRE_THAT(e.what(), Contains("% of the particle radius") && Contains("time step"));
+    // The message names the two particles (their persistent ids 0 and 1), where they are and how fast.
+    REQUIRE_THAT(e.what(), (Contains("particle 0 at (") && Contains("and particle 1 at (")) ||
+                               (Contains("particle 1 at (") && Contains("and particle 0 at (")));
+    REQUIRE_THAT(e.what(), Contains("m/s, radius 0.001 m"));
     // Caught at the step that crossed the 50 % threshold: the overlap is still below 80 %
     // of the radius (unchecked, the spheres would pass through each other).
     const auto& x = again.particles().position;
@@ -76,7 +80,11 @@ TEST_CASE("particles created overlapping are reported before the first step", "[
   const int mud = sim.addMaterial(test::mud());
   auto spec = test::linearSpring();
   sim.setInteraction(mud, mud, spec);
+  sim.addParticle(Vec3(4e-3, 0, 0), 1e-3, mud);  // apart from the others: not the pair named
   sim.addParticle(Vec3(0, 0, 0), 1e-3, mud);
   sim.addParticle(Vec3(0.5e-3, 0, 0), 1e-3, mud);
-  REQUIRE_THROWS_WITH(sim.step(1), Contains("created overlapping"));
+  // Named: the overlapping pair (ids 1 and 2) and where they are, not the lone sphere (id 0).
+  REQUIRE_THROWS_WITH(sim.step(1), Contains("created overlapping") &&
+                                       ((Contains("particle 1 at (0, 0, 0) m") && Contains("and particle 2 at (0.0005, 0, 0) m")) ||
+                                        (Contains("particle 2 at (0.0005, 0, 0) m") && Contains("and particle 1 at (0, 0, 0) m"))));
 }

@@ -90,6 +90,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     std::fill(Rs, Rs + n, 0.0);
     tb.records.clear();
     tb.max_overlap_ratio = 0.0;
+    tb.worst = {};
     tb.active_contacts = 0;
     for (auto& w : tb.work) {
       w.batch.n = 0;
@@ -115,7 +116,10 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
           Rs[w.j[m]] += b.resist_j[m];
         }
         const double ratio = b.overlap[m] / std::min(b.radius_i[m], b.radius_j[m]);
-        tb.max_overlap_ratio = std::max(tb.max_overlap_ratio, ratio);
+        if (ratio > tb.max_overlap_ratio) {
+          tb.max_overlap_ratio = ratio;
+          tb.worst = {p.id[i], is_wall ? static_cast<std::uint64_t>(wall_of_found[w.j[m]]) : p.id[w.j[m]], is_wall};
+        }
         if (b.active[m]) ++tb.active_contacts;
         if (dry) {
           if (b.active[m] || b.fn[m] != 0.0 || b.ft[m].squaredNorm() > 0.0) {
@@ -219,9 +223,13 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   }
 
   double ratio = 0.0;
+  WorstOverlap worst;
   std::uint64_t active = 0;
-  for (const auto& tb : threads) {
-    ratio = std::max(ratio, tb.max_overlap_ratio);
+  for (const auto& tb : threads) {  // in thread order: the same contact for the same run
+    if (tb.max_overlap_ratio > ratio) {
+      ratio = tb.max_overlap_ratio;
+      worst = tb.worst;
+    }
     active += tb.active_contacts;
   }
   if (dry) {
@@ -230,6 +238,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     return;
   }
   max_overlap_ratio = ratio;
+  worst_overlap = worst;
   active_contacts = active;
   for (std::size_t c = 0; c < n_wall; ++c) s.walls_[wall_of_found[c]]->addLoad(-wall_force[c], wall_found[c].point);
   if (!s.walls_.empty()) storeWallHistory(s, wall_hist);

@@ -138,6 +138,33 @@ void checkTimeStep(Simulation& s, double dt, bool explicit_dt) {
 }
 }  // namespace
 
+// Names the contact of the largest overlap for an instability message: the particles' persistent
+// ids, where they are and how fast they move (or the wall's name).
+std::string Simulation::Impl::describeWorstOverlap(const Simulation& s) const {
+  const auto& p = s.particles();
+  auto particle = [&](std::uint64_t id) {
+    std::ostringstream o;
+    o << "particle " << id;
+    for (std::size_t k = 0; k < p.size(); ++k) {
+      if (p.id[k] != id) continue;
+      o << " at (" << p.position[k].x() << ", " << p.position[k].y() << ", " << p.position[k].z() << ") m, speed "
+        << p.velocity[k].norm() << " m/s, radius " << p.radius[k] << " m";
+      break;
+    }
+    return o.str();
+  };
+  const WorstOverlap& w = worst_overlap;
+  std::ostringstream msg;
+  msg << particle(w.id_i) << " and ";
+  if (w.wall) {
+    msg << "wall " << w.id_j;
+    if (w.id_j < s.walls_.size()) msg << " '" << s.walls_[w.id_j]->name() << "'";
+  } else {
+    msg << particle(w.id_j);
+  }
+  return msg.str();
+}
+
 void Simulation::step(std::uint64_t n) {
   if (!impl_->dt_explicit) {
     if (p_.size() == 0 && dt_ <= 0.0) throw InputError("no time step: add particles or set the time step explicitly");
@@ -152,7 +179,7 @@ void Simulation::step(std::uint64_t n) {
     if (m.max_overlap_ratio > kMaxOverlapRatio) {
       std::ostringstream msg;
       msg << "particles overlap by " << 100.0 * m.max_overlap_ratio
-          << " % of their radius before the step at t = " << time_
+          << " % of their radius (" << m.describeWorstOverlap(*this) << ") before the step at t = " << time_
           << " s; they were created overlapping (check the packing or the radii)";
       throw InstabilityError(msg.str());
     }
@@ -203,8 +230,13 @@ void Simulation::step(std::uint64_t n) {
     const double disp_refresh = two_refs ? (bad ? disp : std::sqrt(r2)) : disp;
     if (!std::isfinite(disp)) {
       std::ostringstream msg;
-      msg << "a particle position became NaN or infinite at t = " << time_ << " s (step " << steps_
-          << "); the time step " << dt << " s is too large or a contact parameter is unphysical";
+      msg << "a particle position became NaN or infinite at t = " << time_ << " s (step " << steps_ << ")";
+      for (std::size_t i = 0; i < p_.size(); ++i) {
+        if (p_.position[i].allFinite()) continue;
+        msg << ": particle " << p_.id[i] << " (radius " << p_.radius[i] << " m, force " << p_.force[i].norm() << " N)";
+        break;
+      }
+      msg << "; the time step " << dt << " s is too large or a contact parameter is unphysical";
       throw InstabilityError(msg.str());
     }
     double wall_disp = 0.0;
@@ -214,8 +246,8 @@ void Simulation::step(std::uint64_t n) {
     m.computeForces(*this, Impl::ForcePass::Step);  // predicts the velocities it uses first
     if (m.max_overlap_ratio > kMaxOverlapRatio) {
       std::ostringstream msg;
-      msg << "contact overlap reached " << 100.0 * m.max_overlap_ratio << " % of the particle radius at t = "
-          << time_ << " s (step " << steps_ << "): the time step " << dt << " s ("
+      msg << "contact overlap reached " << 100.0 * m.max_overlap_ratio << " % of the particle radius ("
+          << m.describeWorstOverlap(*this) << ") at t = " << time_ << " s (step " << steps_ << "): the time step " << dt << " s ("
           << dt / rayleighTime() << " x Rayleigh time) is too large for these velocities; reduce it";
       throw InstabilityError(msg.str());
     }

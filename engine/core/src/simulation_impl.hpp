@@ -38,11 +38,19 @@ struct WallContactState {
   std::uint32_t key = 0;
 };
 
+// The contact with the largest overlap / radius of a force pass: named in instability messages.
+struct WorstOverlap {
+  std::uint64_t id_i = 0;    // persistent particle id
+  std::uint64_t id_j = 0;    // persistent particle id, or the wall's index when wall
+  bool wall = false;
+};
+
 struct ThreadBuffers {
   std::vector<Vec3> force, torque;   // per particle (thread 0 uses the main arrays)
   std::vector<double> resist;        // per particle: resisting-torque magnitudes (same rule)
   std::vector<ContactRecord> records;
   double max_overlap_ratio = 0.0;
+  WorstOverlap worst;                // the contact with max_overlap_ratio
   std::uint64_t active_contacts = 0;
   std::vector<BatchWork> work;       // one per contact law
 };
@@ -98,6 +106,8 @@ struct Simulation::Impl {
   std::vector<ContactRecord> last_records;
   std::uint64_t active_contacts = 0;
   double max_overlap_ratio = 0.0;
+  WorstOverlap worst_overlap;
+  std::string describeWorstOverlap(const Simulation& s) const;  // "particles 3 and 7 ..." (integrator.cpp)
 
   // Force evaluation (forces.cpp).
   //   Step:    forces at the new positions; history advanced over the step just taken.

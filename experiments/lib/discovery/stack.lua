@@ -10,6 +10,7 @@ local M = {}
 
 -- Grids beside the vector observables, for labels (the entry's radius, time or speed).
 M.AXES = {profile_mm = {key = "profile_radii_mm", unit = "mm", what = "r"},
+          profile_mean_mm = {key = "profile_radii_mm", unit = "mm", what = "r"},
           history_mm = {key = "history_times_s", unit = "s", what = "t"}}
 
 -- The value(s) of a result key; "a.b" reads result.a.b. → list of numbers, or nil, message.
