@@ -159,7 +159,9 @@ TrialCounts runTrials(const TrialModel& model, const TrialScenario& sc, int tria
   }
   if (sc.truth == "none") c.expected = c.none;
   else if (sc.truth == "outside") c.expected = c.unknown;
-  else if (confusablePair) c.expected = c.ambiguousWithTruth + c.correct;  // both right: never the rival alone
+  // A confusable pair: ambiguous listing the truth; with a finite strong margin also the truth named
+  // on strong evidence (both right; never the rival alone).
+  else if (confusablePair) c.expected = c.ambiguousWithTruth + (std::isfinite(options.strongMargin) ? c.correct : 0);
   else c.expected = c.correct;
   return c;
 }

@@ -11,12 +11,15 @@
 // replicates in every trial and the trial's thresholds from B bootstrap null trials of that
 // estimate; null, truth A at sizes 4, 6, 8, truth C at 6 and outside at 8 →
 // DIR/discovery_bootstrap_rates.csv and .json.
+//   --strong-margin M  runs the rule with that strong margin (discovery.hpp; default infinite: a
+// confusable rival always makes the answer ambiguous) and writes ..._strong<M>.csv and .json.
 #include "paddy/doe/csv.hpp"
 #include "paddy/doe/discovery_trials.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/null_calibration.hpp"
 
 #include <fmt/format.h>
+#include <cmath>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -50,6 +53,7 @@ int main(int argc, char** argv) {
     int trials = 2000, calibration = 2000, bootstrap = 0;
     std::uint64_t seed = 1;
     std::string out;
+    DecisionOptions base;  // the rule's options of every trial (thresholds added per mode)
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       auto next = [&]() -> std::string {
@@ -61,9 +65,12 @@ int main(int argc, char** argv) {
       else if (a == "--bootstrap") bootstrap = intArg(next(), a);
       else if (a == "--seed") seed = static_cast<std::uint64_t>(intArg(next(), a));
       else if (a == "--out") out = next();
-      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --bootstrap B --seed S --out DIR)");
+      else if (a == "--strong-margin") base.strongMargin = std::stod(next());
+      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --bootstrap B --seed S --strong-margin M --out DIR)");
     }
     if (out.empty()) throw DoeError("--out DIR is required");
+    if (!(base.strongMargin >= base.bayesMargin)) throw DoeError("--strong-margin: must be >= " + fmt::format("{:g}", base.bayesMargin));
+    const std::string suffix = std::isfinite(base.strongMargin) ? fmt::format("_strong{:g}", base.strongMargin) : "";
     const TrialModel model = syntheticTrialModel();
     const std::vector<NoiseSetting> noises{{"gaussian", NoiseKind::Gaussian, 0},
                                            {"t5", NoiseKind::StudentT5, 0},
@@ -76,6 +83,7 @@ int main(int argc, char** argv) {
     doc["trials"] = trials;
     doc["calibration_trials"] = calibration;
     doc["seed"] = seed;
+    if (std::isfinite(base.strongMargin)) doc["strong_margin"] = base.strongMargin;
     doc["model"] = {{"observables", model.jacobian.rows()}, {"parameters", model.jacobian.cols()}, {"candidates", {"A", "B", "C", "D"}}};
     {
       DiagnoseInput probe;
@@ -123,22 +131,22 @@ int main(int argc, char** argv) {
                                                  {"C", 6.0, NoiseKind::Gaussian, 8, bootstrap},
                                                  {"outside", 8.0, NoiseKind::Gaussian, 8, bootstrap}};
       for (const auto& sc : scenarios) {
-        record("gaussian_sigma_from_8_replicates", "bootstrap", sc, runTrials(model, sc, trials, ++scenarioSeed));
+        record("gaussian_sigma_from_8_replicates", "bootstrap", sc, runTrials(model, sc, trials, ++scenarioSeed, base));
         std::cerr << "done bootstrap " << sc.truth << " " << sc.size << "\n";
       }
-      writeFileAtomic(out + "/discovery_bootstrap_rates.csv", toCsv(header, rows));
-      writeFileAtomic(out + "/discovery_bootstrap_rates.json", doc.dump(1) + "\n");
-      std::cout << "wrote " << out << "/discovery_bootstrap_rates.csv and .json (" << rows.size() << " rows)\n";
+      writeFileAtomic(out + "/discovery_bootstrap_rates" + suffix + ".csv", toCsv(header, rows));
+      writeFileAtomic(out + "/discovery_bootstrap_rates" + suffix + ".json", doc.dump(1) + "\n");
+      std::cout << "wrote " << out << "/discovery_bootstrap_rates" << suffix << ".csv and .json (" << rows.size() << " rows)\n";
       return 0;
     }
     for (const auto& n : noises) {
       NullStatistics ns;
-      runTrials(model, {"none", 0.0, n.kind, n.replicates}, calibration, seed * 7919ULL + 17, {}, &ns);
+      runTrials(model, {"none", 0.0, n.kind, n.replicates}, calibration, seed * 7919ULL + 17, base, &ns);
       const NullThresholds thr = nullThresholds(ns.zMax, ns.q0, 0.05, ns.qAfter);
       doc["thresholds"][n.name] = {{"z_threshold", thr.zThreshold}, {"q0_threshold", thr.q0Threshold},
                                    {"q_after_threshold", *thr.qAfterThreshold}, {"calibration_alarm_rate", thr.alarmRate}};
       for (const std::string mode : {"chi2_holm", "empirical"}) {
-        DecisionOptions opt;
+        DecisionOptions opt = base;
         if (mode == "empirical") {
           opt.zThreshold = thr.zThreshold;
           opt.q0Threshold = thr.q0Threshold;
@@ -153,9 +161,9 @@ int main(int argc, char** argv) {
         std::cerr << "done " << n.name << " " << mode << "\n";
       }
     }
-    writeFileAtomic(out + "/discovery_error_rates.csv", toCsv(header, rows));
-    writeFileAtomic(out + "/discovery_error_rates.json", doc.dump(1) + "\n");
-    std::cout << "wrote " << out << "/discovery_error_rates.csv and .json (" << rows.size() << " rows)\n";
+    writeFileAtomic(out + "/discovery_error_rates" + suffix + ".csv", toCsv(header, rows));
+    writeFileAtomic(out + "/discovery_error_rates" + suffix + ".json", doc.dump(1) + "\n");
+    std::cout << "wrote " << out << "/discovery_error_rates" << suffix << ".csv and .json (" << rows.size() << " rows)\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "paddy_discovery_error_rates: error: " << e.what() << "\n";

@@ -218,6 +218,10 @@ TEST_CASE("discovery: a confusable rival is set aside only on strong evidence (s
   gD.tail(10) += 0.35 * gaussian(lm.rng, 10);
   DiagnoseInput in = lm.input(8.0 * gC);  // a large C: z_C - z_D is many times its noise sd
   in.candidates = {lm.candidate("C", gC), lm.candidate("D", gD)};
+  // The default: a confusable rival always makes the answer ambiguous.
+  const Diagnosis by_default = diagnose(in);
+  CHECK(by_default.decision == "ambiguous");
+  in.options.strongMargin = 20.0;
   const Diagnosis strong = diagnose(in);
   REQUIRE(strong.confusability(0, 1) > 0.9);
   INFO(strong.reason);

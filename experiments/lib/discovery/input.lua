@@ -122,7 +122,9 @@ function M.read(path)
   S.fd_step = number(path, "settings.fd_step", s.fd_step or 0.1, 1e-4, 0.5)
   S.alpha = number(path, "settings.alpha", s.alpha or 0.05, 1e-6, 0.5)
   S.confusable = number(path, "settings.confusable", s.confusable or 0.9, 0.5, 1)
-  S.strong_margin = number(path, "settings.strong_margin", s.strong_margin or 20, 3, 1e6)
+  -- Optional: name one of two confusable candidates when its Bayes factor beats the other's by this
+  -- factor (absent: a confusable rival always makes the answer ambiguous; docs/discovery.md).
+  S.strong_margin = s.strong_margin ~= nil and number(path, "settings.strong_margin", s.strong_margin, 3, 1e6) or nil
   -- Thresholds of the decision: bootstrap (null trials of the fitted noise model, which knows
   -- that Sigma was estimated from few seeds; doe/include/paddy/doe/bootstrap_null.hpp) or the
   -- chi^2 / normal tables with Holm (right only when Sigma is known).

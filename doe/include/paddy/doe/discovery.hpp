@@ -23,8 +23,9 @@
 //     (score_test.hpp; z^2/2 where no prior scale is known).
 //  4. `ambiguous` if another plausible candidate has a Bayes factor within a factor bayes_margin
 //     of k*'s, or is confusable with it (c(k*, l) >= confusable) and its Bayes factor is within a
-//     factor strong_margin of k*'s: for signatures that look alike the data must give strong
-//     evidence (Kass & Raftery 1995: B > 20) to name one of them. ambiguous_with lists them (k* first) and
+//     factor strong_margin of k*'s (default infinite: a confusable rival always makes the answer
+//     ambiguous; e.g. 20, Kass & Raftery's "strong" evidence, names k* when the data single it
+//     out, at a measured cost in wrong names). ambiguous_with lists them (k* first) and
 //     separating_block names the block (experiment) that best tells k* from its first rival.
 //     `unknown` if Q0 is significant but no candidate passes, if no passing candidate is
 //     plausible, or if Q_k* is still significant (chi^2(m - rank J - 1) at alpha_after).
@@ -61,7 +62,9 @@ struct DecisionOptions {
   double alphaAfter = 0.05;       ///< level of the misfit left after the named effect
   double confusable = 0.9;        ///< |cos| of projected signatures above which two are confusable
   double bayesMargin = 3.0;       ///< BF(k*) / BF(rival) needed to name k* (Kass–Raftery "positive")
-  double strongMargin = 20.0;     ///< BF(k*) / BF(rival) needed over a confusable rival (Kass–Raftery "strong")
+  /// BF(k*) / BF(rival) needed over a confusable rival; infinite (the default): a confusable rival
+  /// always makes the answer ambiguous. 20 is Kass–Raftery's "strong" (docs/discovery.md: its cost).
+  double strongMargin = std::numeric_limits<double>::infinity();
   double absorbedTolerance = 0.05;  ///< |P g| / |g| below this: absorbed by recalibration
   double minRangeZ = 1.0;         ///< high sqrt(a) below this: no sensitivity in the physical range
   std::optional<double> zThreshold, q0Threshold, qAfterThreshold;  ///< empirical thresholds
