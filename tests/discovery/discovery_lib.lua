@@ -117,6 +117,12 @@ t = good(); t.candidates[1].parameter = "jkr_surface_energy"; bad(t, "already a 
 t = good(); t.free_parameters[1].start = 5; bad(t, "free_parameters%[1%]%.start = 5 is outside the allowed range %[0, 0%.2%]")
 t = good(); t.settings = {replicates = 3}; bad(t, "settings%.replicates = 3 is outside the allowed range %[5, 50%]")
 t = good(); t.extra = 1; bad(t, "unknown key 'extra' %(allowed:")
+t = good(); t.settings = {iteration = 3}; bad(t, "unknown key 'settings%.iteration' %(allowed: iterations,")
+t = good(); t.settings = {resolution_factor = 0.3}; bad(t, "settings%.resolution_factor = 0%.3: allowed 0 %(off%) or 0%.5 to 0%.99")
+t = good(); t.settings = {measured_repeats = -1}; bad(t, "settings%.measured_repeats = %-1 is outside the allowed range")
+t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 2 is outside the allowed range %[3,")
+check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
+      and g.settings.backtracks == 2 and g.settings.converge == 0.01, "defaults of the step control, specimen scatter, resolution and strong margin")
 t = good(); t.candidates = {}; bad(t, "'candidates' must be a non%-empty list")
 
 paddy.result{ok = true}

@@ -176,6 +176,15 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
                                                     .. (d.separating_block and ("; the experiment that separates them best: " .. esc(d.separating_block)) or ""))
                   or esc(d.decision)
   add('<p>' .. verdict .. '</p>')
+  if d.reason then add('<p>Why: ' .. esc(d.reason) .. '.</p>') end
+  if o.screening and o.screening.decision ~= d.decision then
+    add('<p>The score test alone answered <b>' .. esc(o.screening.decision) .. '</b>: ' .. esc(o.screening.reason or "") ..
+        '. The decision above was taken after adding the best candidate and recalibrating.</p>')
+  end
+  if o.tried then
+    add(string.format('<p>Tried and not named: %s at %s, which left an RMS standardised residual of %s.</p>',
+                      esc(d.best or "?"), num(o.tried.strength.value), num(o.tried.rms)))
+  end
   local rows = {{"RMS standardised residual", num(o.located.rms), a and num(a.rms) or "–"},
                 {"misfit statistic", num(d.misfit), a and a.diagnosis and num(a.diagnosis.misfit) or "–"},
                 {"projected misfit Q0 (df, p)", string.format("%s (%s, %s)", num(d.q0), num(d.q0_df), pval(d.q0_p)),
