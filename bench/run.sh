@@ -496,6 +496,11 @@ for k in sorted({(s["problem"], s["law"], s["n_requested"], s["threads"], s["ste
             row[f"paddy_over_{other}"] = p["median_particle_steps_per_second"] / o["median_particle_steps_per_second"]
             row[f"paddy_over_{other}_range"] = [p["min"] / o["max"], p["max"] / o["min"]]
             row["contended"] = row["contended"] or o["contended"]
+            # one thread: also the ratio of particle-steps per CPU second (whole process, setup
+            # included), much less sensitive to other processes sharing the cores
+            if p["cpu_seconds_rate_median"] and o["cpu_seconds_rate_median"]:
+                row[f"paddy_over_{other}_per_cpu_second"] = (p["cpu_seconds_rate_median"]
+                                                             / o["cpu_seconds_rate_median"])
     ratios.append(row)
 
 doc = {
@@ -541,11 +546,13 @@ if now_ratios:
     print()
     print("Paddy / other code, ratio of medians (lowest-highest ratio of single runs):")
     print()
-    print("| law | N | threads | Paddy / LAMMPS | Paddy / LIGGGHTS |")
-    print("|---|---:|---:|---:|---:|")
+    cpu = lambda r, o: (f"{r[f'paddy_over_{o}_per_cpu_second']:.2f}"
+                        if f"paddy_over_{o}_per_cpu_second" in r else "")
+    print("| law | N | threads | Paddy / LAMMPS | Paddy / LIGGGHTS | per CPU-s: Paddy / LAMMPS | Paddy / LIGGGHTS |")
+    print("|---|---:|---:|---:|---:|---:|---:|")
     for r in now_ratios:
-        print(f"| {r['law']} | {r['particles']} | {r['threads']} | {fmt(r, 'lammps')} | {fmt(r, 'liggghts')} |"
-              + (" contended!" if r["contended"] else ""))
+        print(f"| {r['law']} | {r['particles']} | {r['threads']} | {fmt(r, 'lammps')} | {fmt(r, 'liggghts')} | "
+              f"{cpu(r, 'lammps')} | {cpu(r, 'liggghts')} |" + (" contended!" if r["contended"] else ""))
 others = [s for s in summary_all if s not in summary and s["steps"] == steps and s["problem"] == problem]
 if others:
     print()
