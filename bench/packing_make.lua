@@ -2,9 +2,10 @@
 -- bench/packing.lua, bench/lammps/packing.in and bench/liggghts/packing.in all start from.
 --
 --   * n monodisperse mud spheres, d = 2 mm (the column collapse's mud), placed at random
---     (sim:fill packing = "random", seed `seed`, loose solid fraction 0.2; random addition jams near 0.25 in the box) in a box of
---     W x W base, W = (n v / 1.2)^(1/3) with v the sphere volume, so that the settled packing
---     (solid fraction ~0.6) stands about 2 W high, like the column case;
+--     (sim:fill packing = "random", seed `seed`, loose solid fraction 0.2: random addition
+--     jams near 0.25 in the box) in a box of W x W base, W = (n v / 1.2)^(1/3) with v the
+--     sphere volume, so that the settled packing (solid fraction ~0.6) stands about 2 W high,
+--     like the column case;
 --   * poured under gravity into that box: floor z = 0 (mud-steel, as in the column case) and
 --     four frictionless side walls, mud-mud Hertz-Mindlin without cohesion or rolling
 --     friction (restitution 0.13, friction 0.15), dt = 0.2 T_R as in the timed case;

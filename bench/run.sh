@@ -24,7 +24,8 @@
 #   -o FILE                 result file (default bench/results/latest.json, for packing
 #                           bench/results/latest_packing.json)
 #   -m                      merge: keep the runs already in FILE and add the new ones
-#                           (for measuring in chunks on a shared machine)
+#                           (for measuring in chunks on a shared machine); with -c none it
+#                           only rebuilds FILE's summary and tables from the runs in it
 #   -B                      do not build Paddy (use build/bin/paddy as it is)
 #   -w SECONDS              before each run, wait up to SECONDS for the machine to be quiet
 #                           (other processes using < 0.25 CPU over 1 s; env BENCH_WAIT,
