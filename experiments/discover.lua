@@ -241,6 +241,33 @@ for j, f in ipairs(free) do theta[j] = f.start end
 local calib = {iterations = {}}
 say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), at most %d Gauss-Newton iteration(s)",
     p, m, #input.experiments, S.iterations)
+-- Start scan: with a few hundred spheres one seed's misfit is rough in θ, and a forward difference
+-- at a poor start can point the wrong way (the step is then rejected and the fit stops far from
+-- the optimum). So the fit starts at the best of the given start and start_scan points spread
+-- over the box (a Latin-hypercube-like design: point k puts parameter j at the centre of stratum
+-- (k·(2j − 1)) mod n of its range), every point at the calibration's seed.
+if S.start_scan > 0 and p > 0 then
+  local n = S.start_scan
+  local pts = {{theta = theta, lambda = {}, seed = seed0, label = "start scan 0"}}
+  for k = 1, n do
+    local t = {}
+    for j, f in ipairs(free) do
+      local stratum = (k * (2 * j - 1)) % n
+      t[j] = f.low + (stratum + 0.5) / n * (f.high - f.low)
+    end
+    pts[#pts + 1] = {theta = t, lambda = {}, seed = seed0, label = "start scan " .. k}
+  end
+  local fs = evaluate("calibration", pts)
+  local best_k, best_rms = 1, math.huge
+  calib.scan = {}
+  for k, f in ipairs(fs) do
+    local rms = stack.rms_standardised(stack.minus(y, f), identity(m))
+    calib.scan[k] = {theta = pts[k].theta, rms_sigma = rms}
+    if rms < best_rms then best_k, best_rms = k, rms end
+  end
+  say("   start scan of %d point(s): best %s, RMS residual %.3g", n + 1, fmt_theta(pts[best_k].theta), best_rms)
+  theta = pts[best_k].theta
+end
 local history = {}
 local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m), history)
 for _, h in ipairs(history) do

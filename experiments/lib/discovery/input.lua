@@ -108,7 +108,7 @@ function M.read(path)
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
-                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge"}
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
   for k in pairs(s) do
@@ -148,6 +148,8 @@ function M.read(path)
   S.backtracks = number(path, "settings.backtracks", s.backtracks or 2, 0, 10)
   -- ... and stops early when the next step would move no parameter by more than converge x its range.
   S.converge = number(path, "settings.converge", s.converge or 0.01, 0, 0.5)
+  -- ... from the best of its start and start_scan points spread over the free parameters' box.
+  S.start_scan = number(path, "settings.start_scan", s.start_scan or 4, 0, 100)
   input.settings = S
   return input
 end
