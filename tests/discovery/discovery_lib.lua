@@ -122,7 +122,7 @@ t = good(); t.settings = {resolution_factor = 0.3}; bad(t, "settings%.resolution
 t = good(); t.settings = {measured_repeats = -1}; bad(t, "settings%.measured_repeats = %-1 is outside the allowed range")
 t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 2 is outside the allowed range %[3,")
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
-      and g.settings.backtracks == 2 and g.settings.converge == 0.01, "defaults of the step control, specimen scatter, resolution and strong margin")
+      and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4, "defaults of the start scan, step control, specimen scatter, resolution and strong margin")
 t = good(); t.candidates = {}; bad(t, "'candidates' must be a non%-empty list")
 
 paddy.result{ok = true}
