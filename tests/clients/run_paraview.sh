@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # ParaView, the real client of Paddy's snapshots (CTest clients.paraview, docs/reliability.md):
-#   1. a coarse slump (40 mm spheres, short settling and lift) writes snapshots every 0.2 s;
+#   1. a coarse slump (40 mm spheres, lattice fill, short settling and lift) writes snapshots every 0.1 s;
 #   2. pvpython (check_snapshot.py) opens particles.xmf: points, vertex cells, id, radius, velocity
 #      and positions equal what Paddy wrote; ParaView's default view of it is not blank;
+#      the same series indexed the old way (no connectivity) must fail those checks;
 #   3. the shipped experiments/paraview/show_slump.py renders the last snapshot offscreen to
 #      show_slump.png, which must not be blank.
 # The pictures stay in WORK. Fails (never skips) when pvpython, xvfb-run or h5dump is missing.
@@ -28,8 +29,8 @@ mkdir -p "$work"
 
 t0=$(date +%s)
 "$paddy" run "$src/experiments/slump.lua" --threads 2 --seed 5 --out "$work/slump" \
-  --set particle_diameter=0.04 --set settle_max_time=0.8 --set min_rest_time=0.1 --set max_time=0.2 \
-  --set snapshot_interval=0.2 --set pictures=false --set progress=false > "$work/slump.log" 2>&1 \
+  --set particle_diameter=0.04 --set packing=lattice --set settle_max_time=0.3 --set min_rest_time=0.1 --set max_time=0.2 \
+  --set snapshot_interval=0.1 --set pictures=false --set progress=false > "$work/slump.log" 2>&1 \
   || { tail -n 30 "$work/slump.log"; fail "the slump run failed"; }
 xmf="$work/slump/snapshots/particles.xmf"
 [ -s "$xmf" ] || fail "no $xmf"
@@ -40,6 +41,19 @@ pv "$here/check_snapshot.py" "$xmf" "$work" > "$work/check_snapshot.log" 2>&1 \
   || { cat "$work/check_snapshot.log"; fail "ParaView does not read the snapshots as written"; }
 cat "$work/check_snapshot.log"
 echo "pvpython checks: $(( $(date +%s) - t0 )) s"
+
+# Control: the same series indexed the old way (Polyvertex without connectivity) must fail the
+# cell count and the default-view checks, or the checks above prove nothing.
+mkdir -p "$work/old_index"
+sed -z 's|NodesPerElement="1">\n *<DataItem[^\n]*/particles/vertex</DataItem>\n *</Topology>|NodesPerElement="1"/>|g' \
+  "$xmf" > "$(dirname "$xmf")/old_index.xmf"
+grep -q particles/vertex "$(dirname "$xmf")/old_index.xmf" && fail "could not write the old index"
+if pv "$here/check_snapshot.py" "$(dirname "$xmf")/old_index.xmf" "$work/old_index" > "$work/old_index.log" 2>&1; then
+  fail "the checks pass an index without connectivity (old_index.log)"
+fi
+grep -q "FAIL: default view .*: 0 pixels show particles" "$work/old_index.log" \
+  || { cat "$work/old_index.log"; fail "the old index did not fail on the empty default view"; }
+echo "control: the old index (no connectivity) fails: $(grep -c FAIL "$work/old_index.log") checks"
 
 t0=$(date +%s)
 pv "$src/experiments/paraview/show_slump.py" "$xmf" --png "$work/show_slump.png" > "$work/show_slump.log" 2>&1 \
