@@ -16,6 +16,10 @@ packages=(
   # Sanitizer runs and fuzzing (scripts/sanitize.sh, scripts/fuzz.sh, docs/reliability.md):
   # clang with its sanitizer and libFuzzer runtimes, LLVM's OpenMP runtime with the Archer tool.
   clang libclang-rt-dev libomp-dev
+  # The real clients of the outputs (tests/clients, label "clients", docs/reliability.md): the
+  # HTML reports in headless Chromium; the XDMF + HDF5 snapshots in ParaView's pvpython, which
+  # renders offscreen under xvfb-run.
+  chromium xvfb python3-paraview paraview
 )
 # Optional: comparison codes for bench/ (not needed to build or test).
 if [ "${PADDY_BENCH_DEPS:-0}" = "1" ]; then

@@ -29,6 +29,7 @@ local P = paddy.parameters{
    description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
+  {name = "report_pictures", default = false, description = "each trial's report.html with its figures (gnuplot; the CI variant checks them in a browser, tests/clients)"},
   {name = "code_version", default = "", description = "fixed code version for the job keys ('' = hash of the binaries)"},
 }
 
@@ -196,7 +197,7 @@ for i, t in ipairs(trials) do
   paddy.write_json(string.format("truth/trial_%04d.json", t.no), truths[i])
   flow_keys[i] = flows:submit{script = workflow,
                               params = {input = util.absolute(path), particle_diameter = d_work, campaign_dir = campaign_dir, max_parallel = 2,
-                                        pictures = false, code_version = P.code_version},
+                                        pictures = P.report_pictures, code_version = P.code_version},
                               seed = 1000 + t.no}
 end
 

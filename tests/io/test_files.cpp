@@ -43,5 +43,6 @@ TEST_CASE("io: XDMF text for an empty and a one-snapshot series", "[io]") {
   CHECK_THAT(paddy::io::xdmfText({}), Catch::Contains("<Xdmf"));
   const std::string x = paddy::io::xdmfText({{"snap_000000.h5", 0.5, 10}});
   CHECK_THAT(x, Catch::Contains("<Time Value=\"0.5\"/>") && Catch::Contains("NumberOfElements=\"10\"") &&
-                    Catch::Contains("Dimensions=\"10 3\"") && Catch::Contains("snap_000000.h5:/particles/radius"));
+                    Catch::Contains("Dimensions=\"10 3\"") && Catch::Contains("snap_000000.h5:/particles/radius") &&
+                    Catch::Contains("snap_000000.h5:/particles/vertex</DataItem>\n        </Topology>"));
 }

@@ -99,6 +99,10 @@ TEST_CASE("io: snapshot is readable back with the right particles and contacts",
   CHECK(vel[3 * 2 + 2] == p.velocity[2].z());
   for (const char* name : {"/particles/omega", "/particles/force", "/particles/material"})
     CHECK(H5Lexists(f, name, H5P_DEFAULT) > 0);
+  // The XDMF connectivity: one vertex cell per particle, 0 .. N-1.
+  const auto vertex = readDataset<std::int64_t>(f, "/particles/vertex", H5T_NATIVE_INT64, dims);
+  REQUIRE(vertex.size() == sim->particles().size());
+  for (std::size_t i = 0; i < vertex.size(); ++i) CHECK(vertex[i] == static_cast<std::int64_t>(i));
   CHECK(readAttribute(f, "time", H5T_NATIVE_DOUBLE) == sim->time());
   CHECK(readAttribute(f, "step", H5T_NATIVE_UINT64) == 3.0);
 
@@ -143,7 +147,7 @@ TEST_CASE("io: XDMF index lists every snapshot and refers to existing datasets",
     H5Fclose(f);
     ++refs;
   }
-  CHECK(refs == 2 * 7);  // position + 6 attributes per snapshot
+  CHECK(refs == 2 * 8);  // vertex connectivity + position + 6 attributes per snapshot
   for (const auto& entry : fs::directory_iterator(dir))
     CHECK(entry.path().string().find(".tmp") == std::string::npos);  // no temporaries left
 }

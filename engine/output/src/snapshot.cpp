@@ -41,6 +41,11 @@ void writeParticles(hid_t file, const ParticleArrays& p) {
   writeDataset(group, "velocity", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.velocity, identity).data());
   writeDataset(group, "omega", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.omega, identity).data());
   writeDataset(group, "force", H5T_NATIVE_DOUBLE, n, 3, flatten3(p.force, identity).data());
+  // The vertex cells of the XDMF topology (0 .. N-1): without an explicit connectivity ParaView's
+  // XDMF3 reader makes points but no cells, and its default Surface view shows nothing.
+  std::vector<std::int64_t> vertex(n);
+  for (std::size_t i = 0; i < n; ++i) vertex[i] = static_cast<std::int64_t>(i);
+  writeDataset(group, "vertex", H5T_NATIVE_INT64, n, 0, vertex.data());
 }
 
 void writeContacts(hid_t file, const std::vector<ContactRecord>& c) {

@@ -44,7 +44,10 @@ std::string xdmfText(const std::vector<SnapshotEntry>& entries) {
     out << "      <Grid Name=\"" << e.file << "\" GridType=\"Uniform\">\n"
         << "        <Time Value=\"" << e.time << "\"/>\n"
         << "        <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.particles
-        << "\" NodesPerElement=\"1\"/>\n"
+        << "\" NodesPerElement=\"1\">\n";
+    // Explicit connectivity (one vertex cell per particle): ParaView makes cells only from it.
+    dataItem(out, e, "vertex", "Int", 8, 1, "          ");
+    out << "        </Topology>\n"
         << "        <Geometry GeometryType=\"XYZ\">\n";
     dataItem(out, e, "position", "Float", 8, 3, "          ");
     out << "        </Geometry>\n";

@@ -1,11 +1,13 @@
 // HDF5 snapshots of a simulation and the XDMF index that lets ParaView open them.
 //
 // Layout of one snapshot file (all SI units):
-//   /particles/{id (u64, N), material (i32, N), radius (N), position, velocity, omega, force (N×3)}
+//   /particles/{id (u64, N), material (i32, N), radius (N), position, velocity, omega, force (N×3),
+//               vertex (i64, N: 0 .. N-1, the connectivity of the XDMF Polyvertex topology)}
 //   /contacts/{id_i, id_j (u64, M), wall (u8, M), overlap (M), normal (M×3), fn (M), ft (M×3)}
 //   root attributes: time (double), step (u64)
 // A SnapshotWriter numbers its files snap_000000.h5, snap_000001.h5, ... in its directory and
-// rewrites particles.xmf (a temporal collection of Polyvertex grids) after each one.
+// rewrites particles.xmf (a temporal collection of Polyvertex grids, one vertex cell per particle:
+// ParaView draws them in its default view) after each one.
 #pragma once
 
 #include <cstdint>
