@@ -243,31 +243,39 @@ say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s
     p, m, #input.experiments, S.iterations)
 -- Start scan: with a few hundred spheres one seed's misfit is rough in θ, and a forward difference
 -- at a poor start can point the wrong way (the step is then rejected and the fit stops far from
--- the optimum). So the fit starts at the best of the given start and start_scan points spread
--- over the box (a Latin-hypercube-like design: point k puts parameter j at the centre of stratum
--- (k·(2j − 1)) mod n of its range), every point at the calibration's seed.
-if S.start_scan > 0 and p > 0 then
+-- the optimum). So a fit starts at the best of its start point and start_scan points spread over
+-- the free parameters' box (a Latin-hypercube-like design: point k puts parameter j at the centre
+-- of stratum (k·(2j − 1)) mod n of its range; any effect strength stays as in the start), every
+-- point at the start's seed. Returns the best point and the scan's record.
+local function scan_start(stage, start, weights)
+  if S.start_scan <= 0 or p == 0 then return start, nil end
   local n = S.start_scan
-  local pts = {{theta = theta, lambda = {}, seed = seed0, label = "start scan 0"}}
+  local pts = {copy_point(start)}
+  pts[1].label = stage .. " scan 0"
   for k = 1, n do
-    local t = {}
+    local q = copy_point(start)
     for j, f in ipairs(free) do
       local stratum = (k * (2 * j - 1)) % n
-      t[j] = f.low + (stratum + 0.5) / n * (f.high - f.low)
+      q.theta[j] = f.low + (stratum + 0.5) / n * (f.high - f.low)
     end
-    pts[#pts + 1] = {theta = t, lambda = {}, seed = seed0, label = "start scan " .. k}
+    q.label = stage .. " scan " .. k
+    pts[#pts + 1] = q
   end
-  local fs = evaluate("calibration", pts)
-  local best_k, best_rms = 1, math.huge
-  calib.scan = {}
+  local fs = evaluate(stage, pts)
+  local best_k, best_rms, record = 1, math.huge, {}
   for k, f in ipairs(fs) do
-    local rms = stack.rms_standardised(stack.minus(y, f), identity(m))
-    calib.scan[k] = {theta = pts[k].theta, rms_sigma = rms}
+    local rms = stack.rms_standardised(stack.minus(y, f), weights)
+    record[k] = {theta = pts[k].theta, rms_sigma = rms}
     if rms < best_rms then best_k, best_rms = k, rms end
   end
-  say("   start scan of %d point(s): best %s, RMS residual %.3g", n + 1, fmt_theta(pts[best_k].theta), best_rms)
-  theta = pts[best_k].theta
+  say("   start scan of %d point(s): best %s, RMS residual %.3g", n + 1, fmt_point(pts[best_k]), best_rms)
+  local best = copy_point(pts[best_k])
+  best.label = nil
+  return best, record
 end
+local start
+start, calib.scan = scan_start("calibration", {theta = theta, lambda = {}, seed = seed0}, identity(m))
+theta = start.theta
 local history = {}
 local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m), history)
 for _, h in ipairs(history) do
@@ -399,8 +407,11 @@ if named then
                      set = function(pt, v) local q = copy_point(pt); q.lambda[named] = v; return q end}
   say("4. recalibration with %s (start %.4g)%s", named, lam, tentative and ": tried, its linearised remainder being significant" or "")
   local history = {}
-  local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov, history)
-  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = {}}
+  -- The free parameters were calibrated without the effect and have absorbed part of it: the refit
+  -- re-scans them with the effect at its estimated strength before its Gauss-Newton steps.
+  local from, scan = scan_start("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, cov)
+  local best = fit("recalibration", from, dims, cov, history)
+  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = {}, scan = scan}
   for _, h in ipairs(history) do
     joint.iterations[#joint.iterations + 1] = {iteration = h.iteration, theta = h.point.theta, lambda = h.point.lambda[named],
                                                rms = h.rms_sigma, accepted = h.accepted, backtrack = h.backtrack}
