@@ -176,74 +176,9 @@ end
 
 local outcome = {input = input, parameters = P, layout = L, measured = y, fixed = fixed}
 
--- Gauss-Newton with step control over `dims` from the point `start` (the calibration and the
--- recalibration with an effect). Every point runs at start.seed (common random numbers), so the
--- misfits of successive points compare like for like; a step that raises the misfit is halved
--- toward the last accepted point (at most S.backtracks times); the fit stops after S.iterations
--- steps, when the next step would move no coordinate by more than S.converge of its range, or when
--- no halving helps, and returns the best point run with its f, Jacobian, residual and the
--- Gauss-Newton step computed there (its se).
-local function fit(stage, start, dims, weights, history)
-  local lo, hi = {}, {}
-  for j, d in ipairs(dims) do lo[j], hi[j] = d.lo, d.hi end
-  local function coords(pt) local x = {}; for j, d in ipairs(dims) do x[j] = d.get(pt) end; return x end
-  local function at(x)
-    local pt = copy_point(start)
-    for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
-    return pt
-  end
-  local x, best, it, tries = coords(start), nil, 0, 0
-  while true do
-    local base = at(x)
-    base.label = string.format("%s %d%s", stage, it, tries > 0 and ("." .. tries) or "")
-    local f, Jt = jacobian_at(stage, base, dims)
-    local r = stack.minus(y, f)
-    local rms = stack.rms_standardised(r, weights)
-    local accepted = not best or rms <= best.rms
-    history[#history + 1] = {iteration = it, x = x, point = base, rms_sigma = rms, accepted = accepted, backtrack = tries}
-    say("   %s %d%s: %s, RMS residual %.3g%s", stage, it, tries > 0 and string.format(" (step halved %d x)", tries) or "",
-        fmt_point(base), rms, accepted and "" or " - rejected")
-    if accepted then
-      best = {x = x, point = base, f = f, J = Jt, r = r, rms = rms}
-      best.step = #dims > 0 and doe.gauss_newton{theta = x, residual = r, jacobian = Jt, covariance = weights,
-                                                 lower = lo, upper = hi, damping = 0} or nil
-      tries = 0
-    elseif tries < S.backtracks then
-      tries = tries + 1
-      local half = {}
-      for j = 1, #dims do half[j] = 0.5 * (best.x[j] + x[j]) end
-      x = half
-      goto continue
-    else
-      say("   no step lowered the misfit: stopping at the best point run")
-      break
-    end
-    if it == S.iterations or #dims == 0 then break end
-    do
-      local largest = 0
-      for j = 1, #dims do largest = math.max(largest, math.abs(best.step.theta[j] - best.x[j]) / (hi[j] - lo[j])) end
-      if largest < S.converge then
-        say("   converged: the next step moves no parameter by more than %.3g of its range", S.converge)
-        break
-      end
-      x, it, tries = best.step.theta, it + 1, 0
-    end
-    ::continue::
-  end
-  return best
-end
-
------------------------------------------------------------------------------------------------
--- 1. Calibrate the free parameters (measurement sigma as the weights: the seed scatter is not
--- known yet).
-local theta = {}
-for j, f in ipairs(free) do theta[j] = f.start end
-local calib = {iterations = {}}
-say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), at most %d Gauss-Newton iteration(s)",
-    p, m, #input.experiments, S.iterations)
 -- Start scan: with a few hundred spheres one seed's misfit is rough in θ, and a forward difference
 -- at a poor start can point the wrong way (the step is then rejected and the fit stops far from
--- the optimum). So a fit starts at the best of its start point and start_scan points spread over
+-- the optimum). So a fit (below) starts at the best of its start point and start_scan points spread over
 -- the free parameters' box (a Latin-hypercube-like design: point k puts parameter j at the centre
 -- of stratum (k·(2j − 1)) mod n of its range; any effect strength stays as in the start), every
 -- point at the start's seed. Returns the best point and the scan's record.
@@ -273,15 +208,78 @@ local function scan_start(stage, start, weights)
   best.label = nil
   return best, record
 end
-local start
-start, calib.scan = scan_start("calibration", {theta = theta, lambda = {}, seed = seed0}, identity(m))
-theta = start.theta
-local history = {}
-local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m), history)
-for _, h in ipairs(history) do
-  calib.iterations[#calib.iterations + 1] = {iteration = h.iteration, theta = h.point.theta, rms_sigma = h.rms_sigma,
-                                             accepted = h.accepted, backtrack = h.backtrack}
+-- Gauss-Newton with step control over `dims` from the point `start` (the calibration and the
+-- recalibration with an effect). Every point runs at start.seed (common random numbers), so the
+-- misfits of successive points compare like for like; a step that raises the misfit is halved
+-- toward the last accepted point (at most S.backtracks times); the fit stops after S.iterations
+-- steps, when the next step would move no coordinate by more than S.converge of its range, or when
+-- no halving helps, and returns the best point run with its f, Jacobian, residual and the
+-- Gauss-Newton step computed there (its se), every point run (`history`) and the start scan (`scan`).
+local function fit(stage, start, dims, weights)
+  local scan
+  start, scan = scan_start(stage, start, weights)
+  local history = {}
+  local lo, hi = {}, {}
+  for j, d in ipairs(dims) do lo[j], hi[j] = d.lo, d.hi end
+  local function coords(pt) local x = {}; for j, d in ipairs(dims) do x[j] = d.get(pt) end; return x end
+  local function at(x)
+    local pt = copy_point(start)
+    for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
+    return pt
+  end
+  local x, best, it, tries = coords(start), nil, 0, 0
+  while true do
+    local base = at(x)
+    base.label = string.format("%s %d%s", stage, it, tries > 0 and ("." .. tries) or "")
+    local f, Jt = jacobian_at(stage, base, dims)
+    local r = stack.minus(y, f)
+    local rms = stack.rms_standardised(r, weights)
+    local accepted = not best or rms <= best.rms
+    history[#history + 1] = {iteration = it, theta = base.theta, lambda = base.lambda, rms_sigma = rms, accepted = accepted,
+                             backtrack = tries}
+    say("   %s %d%s: %s, RMS residual %.3g%s", stage, it, tries > 0 and string.format(" (step halved %d x)", tries) or "",
+        fmt_point(base), rms, accepted and "" or " - rejected")
+    if accepted then
+      best = {x = x, point = base, f = f, J = Jt, r = r, rms = rms}
+      best.step = #dims > 0 and doe.gauss_newton{theta = x, residual = r, jacobian = Jt, covariance = weights,
+                                                 lower = lo, upper = hi, damping = 0} or nil
+      tries = 0
+    elseif tries < S.backtracks then
+      tries = tries + 1
+      local half = {}
+      for j = 1, #dims do half[j] = 0.5 * (best.x[j] + x[j]) end
+      x = half
+      goto continue
+    else
+      say("   no step lowered the misfit: stopping at the best point run")
+      break
+    end
+    if it == S.iterations or #dims == 0 then break end
+    do
+      local largest = 0
+      for j = 1, #dims do largest = math.max(largest, math.abs(best.step.theta[j] - best.x[j]) / (hi[j] - lo[j])) end
+      if largest < S.converge then
+        say("   converged: the next step moves no parameter by more than %.3g of its range", S.converge)
+        break
+      end
+      x, it, tries = best.step.theta, it + 1, 0
+    end
+    ::continue::
+  end
+  best.history, best.scan = history, scan
+  return best
 end
+
+-----------------------------------------------------------------------------------------------
+-- 1. Calibrate the free parameters (measurement sigma as the weights: the seed scatter is not
+-- known yet).
+local theta = {}
+for j, f in ipairs(free) do theta[j] = f.start end
+local calib = {}
+say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), at most %d Gauss-Newton iteration(s)",
+    p, m, #input.experiments, S.iterations)
+local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m))
+calib.iterations, calib.scan = cal.history, cal.scan
 theta = cal.point.theta
 local J, f_hat = cal.J, cal.f
 calib.theta = theta
@@ -406,16 +404,10 @@ if named then
   dims[#dims + 1] = {lo = c.low, hi = c.high, get = function(pt) return pt.lambda[named] end,
                      set = function(pt, v) local q = copy_point(pt); q.lambda[named] = v; return q end}
   say("4. recalibration with %s (start %.4g)%s", named, lam, tentative and ": tried, its linearised remainder being significant" or "")
-  local history = {}
-  -- The free parameters were calibrated without the effect and have absorbed part of it: the refit
-  -- re-scans them with the effect at its estimated strength before its Gauss-Newton steps.
-  local from, scan = scan_start("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, cov)
-  local best = fit("recalibration", from, dims, cov, history)
-  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = {}, scan = scan}
-  for _, h in ipairs(history) do
-    joint.iterations[#joint.iterations + 1] = {iteration = h.iteration, theta = h.point.theta, lambda = h.point.lambda[named],
-                                               rms = h.rms_sigma, accepted = h.accepted, backtrack = h.backtrack}
-  end
+  -- The free parameters were calibrated without the effect and have absorbed part of it: fit's
+  -- start scan re-scans them with the effect at its estimated strength.
+  local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov)
+  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = best.history, scan = best.scan}
   local last = best.step or {}
   local conf_points = {}
   for k = 1, S.confirm_seeds do
