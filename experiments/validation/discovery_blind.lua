@@ -27,6 +27,8 @@ local P = paddy.parameters{
   {name = "truth_diameter", default = 0.014, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of the truth (the measurements)"},
   {name = "candidate_set", default = "effects", choices = {"stand_in", "effects"},
    description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
+  {name = "lift_speeds", default = "", description = "lift speeds of the slump experiments, comma-separated m/s ('' = the variant's: full 0.1,0.4; tiny and small 0.3)"},
+  {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
   {name = "report_pictures", default = false, description = "each trial's report.html with its figures (gnuplot; the CI variant checks them in a browser, tests/clients)"},
@@ -87,6 +89,13 @@ if P.tiny or P.small then
   settings = {iterations = 5, replicates = 5, signature_seeds = 1, confirm_seeds = 2, measured_repeats = 1,
               resolution_factor = 0.9, resolution_seeds = 2}
 end
+if P.lift_speeds ~= "" then
+  experiments = {}
+  for _, v in ipairs(util.numbers(P.lift_speeds, "lift_speeds")) do
+    if v <= 0 or v > 2 then error(string.format("discovery_blind.lua: lift_speeds = %s: each speed must be in (0, 2] m/s", P.lift_speeds), 0) end
+    experiments[#experiments + 1] = {name = string.format("slump_%gmps", v), script = "slump.lua", set = {lift_speed = v}}
+  end
+end
 for _, e in ipairs(experiments) do for k, v in pairs(common) do e.set[k] = v end end
 
 -- Trials in a fixed order, their truths drawn from their seeds.
@@ -103,6 +112,16 @@ for i = 1, math.max(n_cand, n_null, n_outside) do
   if i <= n_cand then add_trial("candidate") end
   if i <= n_null then add_trial("none") end
   if i <= n_outside then add_trial("outside") end
+end
+
+-- only_trials: keep the chosen trials of the sequence (their numbers and truths unchanged).
+if P.only_trials ~= "" then
+  local keep, kept = {}, {}
+  for _, n in ipairs(util.numbers(P.only_trials, "only_trials")) do keep[math.tointeger(n) or n] = true end
+  for _, t in ipairs(trials) do if keep[t.no] then kept[#kept + 1] = t; keep[t.no] = nil end end
+  local missing = next(keep)
+  if missing then error(string.format("discovery_blind.lua: only_trials names trial %s, which the benchmark's %d trials do not have", tostring(missing), #trials), 0) end
+  trials = kept
 end
 
 local function draw_truth(t)

@@ -43,6 +43,19 @@ elseif(CASE STREQUAL "input_errors")
     message(FATAL_ERROR "missing sigma: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
 
+  # The blind benchmark's trial selection and lift speeds: a trial the sequence does not have and a
+  # speed out of range are refused before any simulation runs.
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out blind --threads 1
+            --set small=true --set effect_trials=2 --set null_trials=1 --set outside_trials=0 --set only_trials=2,5)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "only_trials names trial 5, which the benchmark's 3 trials do not have")
+    message(FATAL_ERROR "only_trials out of the sequence: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out blind --threads 1
+            --set small=true --set lift_speeds=0.1,3)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "lift_speeds = 0.1,3: each speed must be in \\(0, 2\\] m/s")
+    message(FATAL_ERROR "lift speed out of range: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
+
 elseif(CASE STREQUAL "slump_observables")
   # ~400 spheres of 25 mm, a fast lift. A broken sampler fails: wrong lengths (grids must not depend
   # on the run), a profile that does not fall from the axis to the plate, a history that does not
