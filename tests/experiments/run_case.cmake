@@ -334,6 +334,42 @@ elseif(CASE STREQUAL "validation_pb")
     message(FATAL_ERROR "the second invocation did not resume from the finished jobs")
   endif()
 
+elseif(CASE STREQUAL "validation_sa")
+  # The steepest-ascent validation on Table 6's 4 steps as tiny slump runs (the columns of
+  # validation_pb): every run finishes, the files exist, the CSV has a header and 4 rows, its EDEM
+  # columns equal Table 6, the agreement and the best steps equal their closed form recomputed
+  # from the CSV (check_validation_sa.lua), and a second invocation resumes without running a job.
+  set(tiny "cone=none,packing=lattice,max_time=0.3,min_rest_time=0.1,snapshot_interval=0,pictures=false")
+  set(args run ${SOURCE}/experiments/validation/steepest_ascent.lua --out out --threads 1
+      --set particle_diameter=0.04 --set max_parallel=2 --set threads_per_job=1
+      --set reference_dir=${SOURCE}/../shared/reference --set slump_set=${tiny})
+  run_paddy(code se ${args})
+  expect_code(${code} 0)
+  result(n finished)
+  expect_number(${n} GREATER 3.5 "finished runs")
+  result(nf failed)
+  expect_number(${nf} LESS 0.5 "failed runs")
+  result(b best_step edem mean step)
+  expect_number(${b} GREATER 3.5 "EDEM best step (the reference chose 4)")
+  foreach(f sa_runs.csv sa_validation.json sa_runs.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  file(STRINGS ${WORK}/out/sa_runs.csv lines)
+  list(LENGTH lines nl)
+  expect_number(${nl} GREATER 4.5 "lines of sa_runs.csv")
+  expect_number(${nl} LESS 5.5 "lines of sa_runs.csv")
+  if(NOT LAST_STDOUT MATCHES "best step by δ: EDEM step 4")
+    message(FATAL_ERROR "stdout lacks the best step:\n${LAST_STDOUT}")
+  endif()
+  run_paddy(code se run ${HERE}/check_validation_sa.lua --set dir=${WORK}/out
+            --set reference_dir=${SOURCE}/../shared/reference --out check)
+  expect_code(${code} 0)
+  run_paddy(code se ${args})
+  expect_code(${code} 0)
+  if(NOT se MATCHES "4 job\\(s\\) already done")
+    message(FATAL_ERROR "the second invocation did not resume from the finished jobs")
+  endif()
+
 elseif(CASE STREQUAL "validation_cg")
   # The coarse-graining campaign on 2 sizes x 2 seeds of tiny released columns: per-size mean and
   # std, the tests and the pictures.
