@@ -87,6 +87,7 @@ void writeSnapshot(const Simulation& sim, const fs::path& file) {
       writeAttribute(f, "step", static_cast<std::uint64_t>(sim.stepCount()));
       writeParticles(f, sim.particles());
       writeContacts(f, contacts);
+      f.close("write file " + tmp.string());
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string(e.what()) + " (snapshot " + file.string() + ")");
     }
