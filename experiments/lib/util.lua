@@ -80,12 +80,23 @@ function M.write_columns(name, header, rows)
   return M.write_file(M.out(name), table.concat(lines, "\n") .. "\n")
 end
 
+-- A CSV cell: numbers as %.9g; text in double quotes (quotes doubled, RFC 4180) when it holds a
+-- comma, a quote or a line break, so a text can never add a column or a row.
+local function csv_cell(v)
+  if type(v) == "number" then return string.format("%.9g", v) end
+  local text = tostring(v)
+  if text:find('[,"\r\n]') then return '"' .. text:gsub('"', '""') .. '"' end
+  return text
+end
+
 -- Writes a CSV file with a header line.
 function M.write_csv(name, columns, rows)
-  local lines = {table.concat(columns, ",")}
+  local header = {}
+  for k, c in ipairs(columns) do header[k] = csv_cell(c) end
+  local lines = {table.concat(header, ",")}
   for _, row in ipairs(rows) do
     local cells = {}
-    for k, v in ipairs(row) do cells[k] = type(v) == "number" and string.format("%.9g", v) or tostring(v) end
+    for k, v in ipairs(row) do cells[k] = csv_cell(v) end
     lines[#lines + 1] = table.concat(cells, ",")
   end
   return M.write_file(M.out(name), table.concat(lines, "\n") .. "\n")

@@ -35,6 +35,10 @@ function M.read(path)
   for k in pairs(t) do
     if not known[k] then fail(path, "unknown key '" .. tostring(k) .. "' (allowed: experiments, free_parameters, candidates, description, settings)") end
   end
+  -- Free text (the description, string values of set) is shown HTML-escaped in the report;
+  -- names (experiments, observables, parameters, candidates) become result keys, figure labels
+  -- and --set names, so they must be plain names.
+  if t.description ~= nil and type(t.description) ~= "string" then fail(path, "'description' must be a text") end
   local input = {path = path, description = t.description or "", experiments = {}, free_parameters = {}, candidates = {}}
 
   if type(t.experiments) ~= "table" or #t.experiments == 0 then fail(path, "'experiments' must be a non-empty list") end
@@ -47,6 +51,9 @@ function M.read(path)
     if not SCRIPTS[e.script] then fail(path, where .. ".script = " .. tostring(e.script) .. " (allowed: slump.lua, rheometer.lua)") end
     if e.set ~= nil and type(e.set) ~= "table" then fail(path, where .. ".set must be an object {parameter = value}") end
     for k, v in pairs(e.set or {}) do
+      if type(k) ~= "string" or not k:match(NAME) then
+        fail(path, string.format("%s.set: %q must be a parameter name such as cone_lift_speed", where, tostring(k)))
+      end
       if type(v) ~= "number" and type(v) ~= "string" and type(v) ~= "boolean" then
         fail(path, string.format("%s.set.%s must be a number, string or boolean", where, tostring(k)))
       end
@@ -55,7 +62,12 @@ function M.read(path)
     if type(e.sigma) ~= "table" then fail(path, where .. ".sigma must be an object with the keys of measured") end
     local x = {name = e.name, script = e.script, set = e.set or {}, observables = {}}
     local keys = {}
-    for key in pairs(e.measured) do keys[#keys + 1] = key end
+    for key in pairs(e.measured) do
+      if type(key) ~= "string" or not key:match(NAME) then
+        fail(path, string.format("%s.measured: %q must be a result key of the experiment such as slump_mm", where, tostring(key)))
+      end
+      keys[#keys + 1] = key
+    end
     table.sort(keys)
     for _, key in ipairs(keys) do
       local m, vec = values(path, where .. ".measured." .. key, e.measured[key])
