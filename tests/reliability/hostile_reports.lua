@@ -118,6 +118,13 @@ for _, h in ipairs(hostile) do
     acceptances = acceptances + 1
   end
 end
+-- a result key with dots (a.b reads result.a.b) stays allowed
+do
+  local d = deep_copy(disc_base)
+  d.experiments[1].measured["torque.steady_Nm"] = 1
+  d.experiments[1].sigma["torque.steady_Nm"] = 0.1
+  check(accepted(discovery_input.read, d, 9999) ~= nil, "discovery: the dotted result key torque.steady_Nm was refused")
+end
 print(string.format("inputs: %d hostile names refused, %d free texts accepted unchanged", refusals, acceptances))
 
 -- 2. The reports ----------------------------------------------------------------------------

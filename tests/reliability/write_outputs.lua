@@ -6,7 +6,7 @@ local util = require("lib.util")
 local P = paddy.parameters{
   outputs = {default = "all", type = "string",
              description = "what to write: all, snapshot, checkpoint, json, csv or result"},
-  big = {default = 0, type = "integer", min = 0, max = 1, description = "1: the chosen output is large (≥ 200 kB)"},
+  big = {default = 0, type = "integer", min = 0, max = 1, description = "1: the chosen output is large (160 kB or more)"},
   label = {default = "run", type = "string", description = "a text stored in the outputs"},
 }
 local function wants(what) return P.outputs == "all" or P.outputs == what end

@@ -8,6 +8,10 @@ local M = {}
 
 local SCRIPTS = {["slump.lua"] = true, ["rheometer.lua"] = true}
 local NAME = "^[%a][%w_]*$"
+-- A result key: names joined by dots (a.b reads result.a.b).
+local function result_key(key)
+  return type(key) == "string" and key:match("^[%a][%w_%.]*$") ~= nil and not key:find("%.%.") and not key:find("%.$")
+end
 
 -- measured/sigma value: a number or a non-empty list of numbers (a vector observable).
 local function values(path, where, v)
@@ -63,8 +67,8 @@ function M.read(path)
     local x = {name = e.name, script = e.script, set = e.set or {}, observables = {}}
     local keys = {}
     for key in pairs(e.measured) do
-      if type(key) ~= "string" or not key:match(NAME) then
-        fail(path, string.format("%s.measured: %q must be a result key of the experiment such as slump_mm", where, tostring(key)))
+      if not result_key(key) then
+        fail(path, string.format("%s.measured: %q must be a result key of the experiment such as slump_mm or a.b", where, tostring(key)))
       end
       keys[#keys + 1] = key
     end
