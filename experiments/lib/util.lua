@@ -172,9 +172,10 @@ function M.shell_quote(text)
 end
 
 -- Text as a gnuplot string constant: single quotes (gnuplot runs `commands` in double-quoted
--- strings, never in single-quoted ones), a quote doubled.
+-- strings, never in single-quoted ones), a quote doubled, a line break (which would end the
+-- gnuplot command and start another) a blank.
 function M.gnuplot_text(text)
-  return "'" .. tostring(text):gsub("'", "''") .. "'"
+  return "'" .. tostring(text):gsub("'", "''"):gsub("[\r\n]", " ") .. "'"
 end
 
 function M.gnuplot(stem, script)
