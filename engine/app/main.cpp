@@ -14,10 +14,15 @@
 #include <paddy/lua/doe.hpp>
 #endif
 
+#include <csignal>
 #include <cstring>
 #include <iostream>
 
 int main(int argc, char** argv) {
+  // A file grown past `ulimit -f` must not kill paddy with SIGXFSZ (no message, no error.json):
+  // ignored, the write fails with EFBIG and is reported like any other failed write, naming the
+  // file. The jobs a campaign starts inherit this.
+  std::signal(SIGXFSZ, SIG_IGN);
 #ifdef PADDY_HAVE_DOE
   paddy::lua::addPreload("paddy.doe", &luaopen_paddy_doe);
   if (argc > 1 && std::strcmp(argv[1], "doe") == 0) return paddy::doe::runCli(argc - 1, argv + 1);

@@ -44,34 +44,62 @@ end
 
 -- Creates a directory (and its parents) if it does not exist; returns it.
 function M.mkdir(dir)
-  os.execute("mkdir -p '" .. dir:gsub("'", "'\\''") .. "'")
+  os.execute("mkdir -p " .. M.shell_quote(dir))
   return dir
+end
+
+-- Writes `text` to `path` atomically: a temporary file beside it, then a rename, so a full disk,
+-- `ulimit -f` or a kill never leaves a half-written file under the real name (an earlier file
+-- stays). Every failure is an error naming the file and the cause. Returns path.
+function M.write_file(path, text)
+  local tmp = path .. ".tmp"
+  local f, err = io.open(tmp, "wb")
+  if not f then error("cannot write '" .. path .. "': " .. tostring(err), 2) end
+  local ok, werr = f:write(text)
+  local closed, cerr = f:close()  -- the buffered rest is written here: it can fail too
+  if not ok or not closed then
+    os.remove(tmp)
+    error("cannot write '" .. path .. "' (temporary '" .. tmp .. "'): " .. tostring(werr or cerr), 2)
+  end
+  local renamed, rerr = os.rename(tmp, path)
+  if not renamed then
+    os.remove(tmp)
+    error("cannot write '" .. path .. "': " .. tostring(rerr), 2)
+  end
+  return path
 end
 
 -- Writes rows (arrays of numbers) as whitespace-separated columns, with a header comment.
 function M.write_columns(name, header, rows)
-  local f = assert(io.open(M.out(name), "w"))
-  f:write("# ", header, "\n")
+  local lines = {"# " .. header}
   for _, row in ipairs(rows) do
     local cells = {}
     for k, v in ipairs(row) do cells[k] = string.format("%.9g", v) end
-    f:write(table.concat(cells, " "), "\n")
+    lines[#lines + 1] = table.concat(cells, " ")
   end
-  f:close()
-  return M.out(name)
+  return M.write_file(M.out(name), table.concat(lines, "\n") .. "\n")
+end
+
+-- A CSV cell: numbers as %.9g; text in double quotes (quotes doubled, RFC 4180) when it holds a
+-- comma, a quote or a line break, so a text can never add a column or a row.
+local function csv_cell(v)
+  if type(v) == "number" then return string.format("%.9g", v) end
+  local text = tostring(v)
+  if text:find('[,"\r\n]') then return '"' .. text:gsub('"', '""') .. '"' end
+  return text
 end
 
 -- Writes a CSV file with a header line.
 function M.write_csv(name, columns, rows)
-  local f = assert(io.open(M.out(name), "w"))
-  f:write(table.concat(columns, ","), "\n")
+  local header = {}
+  for k, c in ipairs(columns) do header[k] = csv_cell(c) end
+  local lines = {table.concat(header, ",")}
   for _, row in ipairs(rows) do
     local cells = {}
-    for k, v in ipairs(row) do cells[k] = type(v) == "number" and string.format("%.9g", v) or tostring(v) end
-    f:write(table.concat(cells, ","), "\n")
+    for k, v in ipairs(row) do cells[k] = csv_cell(v) end
+    lines[#lines + 1] = table.concat(cells, ",")
   end
-  f:close()
-  return M.out(name)
+  return M.write_file(M.out(name), table.concat(lines, "\n") .. "\n")
 end
 
 -- Reads a CSV file with a header line into an array of {column = number or string}.
@@ -138,15 +166,24 @@ end
 -- Runs a gnuplot script (text) written to <stem>.gp inside the output directory; the picture
 -- is <stem>.png. Returns the PNG path, or nil and a message when gnuplot fails (pictures are
 -- optional: the measurements do not depend on them).
+-- Text as one shell word (single quotes; for os.execute and io.popen).
+function M.shell_quote(text)
+  return "'" .. tostring(text):gsub("'", "'\\''") .. "'"
+end
+
+-- Text as a gnuplot string constant: single quotes (gnuplot runs `commands` in double-quoted
+-- strings, never in single-quoted ones), a quote doubled, a line break (which would end the
+-- gnuplot command and start another) a blank.
+function M.gnuplot_text(text)
+  return "'" .. tostring(text):gsub("'", "''"):gsub("[\r\n]", " ") .. "'"
+end
+
 function M.gnuplot(stem, script)
   local gp = M.out(stem .. ".gp")
   local png = M.out(stem .. ".png")
-  local f = assert(io.open(gp, "w"))
-  f:write("set terminal pngcairo size 900,700 noenhanced font 'sans,11'\n")
-  f:write(string.format("set output '%s'\n", png))
-  f:write(script, "\n")
-  f:close()
-  local ok = os.execute(string.format("gnuplot '%s' > '%s' 2>&1", gp, M.out(stem .. ".log")))
+  M.write_file(gp, "set terminal pngcairo size 900,700 noenhanced font 'sans,11'\n" ..
+                   "set output " .. M.gnuplot_text(png) .. "\n" .. script .. "\n")
+  local ok = os.execute(string.format("gnuplot %s > %s 2>&1", M.shell_quote(gp), M.shell_quote(M.out(stem .. ".log"))))
   if not ok then
     local msg = "gnuplot failed on " .. gp .. " (see " .. M.out(stem .. ".log") .. ")"
     io.stderr:write("warning: ", msg, "\n")

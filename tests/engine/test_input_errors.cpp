@@ -1,6 +1,7 @@
 #include "test_models.hpp"
 
 #include <paddy/errors.hpp>
+#include <paddy/plane_wall.hpp>
 #include <paddy/simulation.hpp>
 
 #include <catch2/catch.hpp>
@@ -72,6 +73,49 @@ TEST_CASE("an exploding contact is caught before it explodes", "[engine][errors]
     // of the radius (unchecked, the spheres would pass through each other).
     const auto& x = again.particles().position;
     REQUIRE(std::abs(x[1].x() - x[0].x()) > 2e-3 - 0.8e-3);
+  }
+}
+
+TEST_CASE("a sphere pressed into a wall is caught and named with the wall", "[engine][errors][stability]") {
+  // A far too soft contact: a sphere thrown at 5 m/s into a static floor, and a lid driven at
+  // 5 m/s onto a sphere resting on that floor. The message must name the particle (persistent id,
+  // position, speed, radius) and the wall by its name, not another wall or another particle.
+  for (const bool moving_lid : {false, true}) {
+    DYNAMIC_SECTION((moving_lid ? "a lid pressed onto a sphere" : "a sphere thrown into the floor")) {
+      Simulation sim(test::testPlugins());
+      const int mud = sim.addMaterial(test::mud());
+      const int steel = sim.addMaterial(Material{"steel", 7800.0, 7e9, 0.3});
+      auto spec = test::linearSpring(1e-3);
+      sim.setInteraction(mud, mud, spec);
+      sim.setInteraction(mud, steel, spec);
+      sim.setGravity(Vec3::Zero());
+      sim.addWall(std::make_unique<PlaneWall>("side wall", steel, Vec3(-0.05, 0, 0), Vec3::UnitX()));  // never touched
+      sim.addWall(std::make_unique<PlaneWall>("paddy floor", steel, Vec3::Zero(), Vec3::UnitZ()));
+      if (moving_lid)
+        sim.addWall(std::make_unique<PlaneWall>("pressing lid", steel, Vec3(0.01, 0, 2.05e-3), -Vec3::UnitZ(),
+                                                Vec3(0, 0, -5.0)));
+      // id 0: a smaller sphere far aside under the lid, which the lid reaches only 0.95 mm later
+      sim.addParticle(Vec3(0.02, 0.02, 0.6e-3), 0.5e-3, mud);
+      sim.addParticle(Vec3(0.01, 0, moving_lid ? 1e-3 : 1.1e-3), 1e-3, mud,
+                      moving_lid ? Vec3::Zero() : Vec3(0, 0, -5.0));  // id 1
+      try {
+        sim.step(2000);
+        FAIL("no instability reported");
+      } catch (const InstabilityError& e) {
+        const std::string what = e.what();
+        INFO(what);
+        CHECK_THAT(what, Contains("% of the particle radius") && Contains("time step"));
+        CHECK_THAT(what, Contains("particle 1 at (0.01, ") && Contains(" m, speed ") && Contains("m/s, radius 0.001 m"));
+        CHECK_THAT(what, !Contains("particle 0"));
+        if (moving_lid)  // the lid's overlap grows fastest: the sphere has barely started to move
+          CHECK_THAT(what, Contains("wall 2 'pressing lid'"));
+        else
+          CHECK_THAT(what, Contains("wall 1 'paddy floor'"));
+        CHECK_THAT(what, !Contains("side wall"));
+        // Caught before the sphere went through the wall.
+        CHECK(sim.particles().position[1].z() > 0.0);
+      }
+    }
   }
 }
 

@@ -1,11 +1,14 @@
 // Atomic file output (tmp + rename), see paddy/io/atomic_file.hpp.
 #include <paddy/io/atomic_file.hpp>
 
-#include <fstream>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 namespace paddy::io {
 
@@ -25,6 +28,12 @@ void ensureParent(const fs::path& path) {
   }
 }
 
+// "cannot write 'PATH' (temporary 'TMP'): CAUSE", the cause from errno (EFBIG, ENOSPC, EACCES, ...).
+[[noreturn]] void fail(const char* what, const fs::path& path, const fs::path& tmp, int err) {
+  throw std::runtime_error(std::string("cannot ") + what + " '" + path.string() + "' (temporary '" + tmp.string() +
+                           "'): " + std::strerror(err));
+}
+
 }  // namespace
 
 void produceFileAtomic(const fs::path& path, const std::function<void(const fs::path&)>& write) {
@@ -32,6 +41,13 @@ void produceFileAtomic(const fs::path& path, const std::function<void(const fs::
   const fs::path tmp = temporaryFor(path);
   try {
     write(tmp);
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    fs::remove(tmp, ignored);
+    // The message names the file being written (the writer may only know the temporary name).
+    if (std::string(e.what()).find(path.string()) == std::string::npos)
+      throw std::runtime_error("cannot write '" + path.string() + "': " + e.what());
+    throw;
   } catch (...) {
     std::error_code ignored;
     fs::remove(tmp, ignored);
@@ -48,11 +64,21 @@ void produceFileAtomic(const fs::path& path, const std::function<void(const fs::
 
 void writeFileAtomic(const fs::path& path, std::string_view content) {
   produceFileAtomic(path, [&](const fs::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot open '" + tmp.string() + "' for writing");
-    out.write(content.data(), static_cast<std::streamsize>(content.size()));
-    out.flush();
-    if (!out) throw std::runtime_error("cannot write '" + tmp.string() + "'");
+    // POSIX calls rather than a stream: every failure keeps its errno for the message.
+    const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd < 0) fail("create", path, tmp, errno);
+    std::size_t done = 0;
+    while (done < content.size()) {
+      const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {  // EFBIG past `ulimit -f` (SIGXFSZ is ignored by paddy), ENOSPC, EIO, ...
+        const int err = n < 0 ? errno : EIO;
+        ::close(fd);
+        fail("write", path, tmp, err);
+      }
+      done += static_cast<std::size_t>(n);
+    }
+    if (::close(fd) != 0) fail("write", path, tmp, errno);
   });
 }
 

@@ -6,6 +6,7 @@
 #include <paddy/errors.hpp>
 
 #include <filesystem>
+#include <stdexcept>
 
 namespace paddy {
 
@@ -27,7 +28,9 @@ std::vector<Vec3> unflatten(const std::vector<double>& d) {
 
 void Simulation::saveCheckpoint(const std::string& path) const {
   const std::string tmp = path + ".tmp";
-  {
+  // Written to "<path>.tmp", then renamed: a kill, a full disk or `ulimit -f` never leaves a
+  // half-written checkpoint under the real name (and the earlier one stays).
+  try {
     h5::File f = h5::File::create(tmp);
     f.writeAttr("version", kCheckpointVersion);
     f.writeAttr("time", time_);
@@ -77,8 +80,19 @@ void Simulation::saveCheckpoint(const std::string& path) const {
     f.write("walls/wall", wwall);
     f.write("walls/key", wkey);
     f.write("walls/history", impl_->wall_history);
+    f.close();
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw std::runtime_error("cannot write checkpoint '" + path + "': " + e.what());
   }
-  std::filesystem::rename(tmp, path);
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    std::filesystem::remove(tmp, ignored);
+    throw std::runtime_error("cannot write checkpoint '" + path + "': renaming '" + tmp + "': " + ec.message());
+  }
 }
 
 void Simulation::loadCheckpoint(const std::string& path) {

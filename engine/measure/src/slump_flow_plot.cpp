@@ -1,10 +1,12 @@
 // Pictures of the slump-flow measurement: PGM images and a gnuplot PNG (top view, contour, circle).
+#include <paddy/io/atomic_file.hpp>
 #include <paddy/measure/slump_flow.hpp>
 
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <stdexcept>
 
 namespace paddy::measure {
@@ -48,11 +50,11 @@ std::ofstream openFile(const std::filesystem::path& file, std::ios::openmode mod
 void writePgm(const SlumpFlowResult& res, const std::filesystem::path& file, PgmLayer layer) {
   const TopViewImage& g = res.image;
   const auto grey = greyImage(res, layer);
-  auto f = openFile(file, std::ios::out | std::ios::binary);
+  std::ostringstream f;
   f << "P5\n# paddy slump-flow top view, pixel " << g.pixel << " m\n" << g.nx << ' ' << g.ny << "\n255\n";
   for (int j = g.ny - 1; j >= 0; --j)  // north up
     f.write(reinterpret_cast<const char*>(grey.data() + static_cast<std::size_t>(j) * g.nx), g.nx);
-  if (!f) throw std::runtime_error("error writing " + file.string());
+  io::writeFileAtomic(file, f.str());  // temporary + rename; errors name the file and the cause
 }
 
 void plotSlumpFlow(const SlumpFlowResult& res, const std::filesystem::path& png, const std::string& title) {

@@ -10,7 +10,7 @@ void writeDataset(hid_t parent, const std::string& name, hid_t type, std::size_t
   Handle set(H5Dcreate2(parent, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose,
              "create dataset " + name);
   if (rows > 0 && H5Dwrite(set, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-    throw std::runtime_error("HDF5: cannot write dataset " + name);
+    throw std::runtime_error("HDF5: cannot write dataset " + name + paddy::h5::systemCause());
 }
 
 namespace {
@@ -18,7 +18,8 @@ void writeScalarAttribute(hid_t object, const std::string& name, hid_t type, con
   Handle space(H5Screate(H5S_SCALAR), H5Sclose, "create dataspace for attribute " + name);
   Handle attr(H5Acreate2(object, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT), H5Aclose,
               "create attribute " + name);
-  if (H5Awrite(attr, type, value) < 0) throw std::runtime_error("HDF5: cannot write attribute " + name);
+  if (H5Awrite(attr, type, value) < 0)
+    throw std::runtime_error("HDF5: cannot write attribute " + name + paddy::h5::systemCause());
 }
 }  // namespace
 

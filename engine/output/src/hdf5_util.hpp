@@ -2,6 +2,7 @@
 #pragma once
 
 #include <hdf5.h>
+#include <paddy/io/h5_file.hpp>
 
 #include <cstdint>
 #include <stdexcept>
@@ -15,9 +16,16 @@ class Handle {
  public:
   using Closer = herr_t (*)(hid_t);
   Handle(hid_t id, Closer close, const std::string& what) : id_(id), close_(close) {
-    if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what);
+    if (id_ < 0) throw std::runtime_error("HDF5: cannot " + what + paddy::h5::systemCause());
   }
   ~Handle() { if (id_ >= 0) close_(id_); }
+  // Closes now and reports a failure (closing a file writes what HDF5 still buffers).
+  void close(const std::string& what) {
+    if (id_ < 0) return;
+    const herr_t st = close_(id_);
+    id_ = -1;
+    if (st < 0) throw std::runtime_error("HDF5: cannot " + what + paddy::h5::systemCause());
+  }
   Handle(const Handle&) = delete;
   Handle& operator=(const Handle&) = delete;
   operator hid_t() const { return id_; }

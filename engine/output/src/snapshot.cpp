@@ -87,6 +87,7 @@ void writeSnapshot(const Simulation& sim, const fs::path& file) {
       writeAttribute(f, "step", static_cast<std::uint64_t>(sim.stepCount()));
       writeParticles(f, sim.particles());
       writeContacts(f, contacts);
+      f.close("write file " + tmp.string());
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string(e.what()) + " (snapshot " + file.string() + ")");
     }
@@ -100,7 +101,9 @@ fs::path SnapshotWriter::write(const Simulation& sim) {
     if (fs::is_directory(dir_, ec)) {
       for (const auto& entry : fs::directory_iterator(dir_, ec)) {
         const std::string name = entry.path().filename().string();
-        if ((name.rfind("snap_", 0) == 0 && entry.path().extension() == ".h5") || name == "particles.xmf")
+        // (also the temporaries of a run killed while writing: snap_NNNNNN.h5.tmp.PID)
+        if ((name.rfind("snap_", 0) == 0 && (entry.path().extension() == ".h5" || name.find(".h5.tmp.") != std::string::npos)) ||
+            name == "particles.xmf")
           fs::remove(entry.path(), ec);
       }
     }

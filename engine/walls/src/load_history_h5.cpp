@@ -89,6 +89,7 @@ void writeLoadHistoryH5(const std::string& path, const std::vector<NamedLoadHist
     f.writeAttr("/", "format", std::string("paddy wall loads"));
     f.writeAttr("/", "version", kFormatVersion);
     for (const auto& w : walls) writeWall(f, w);
+    f.close();
   });
 }
 

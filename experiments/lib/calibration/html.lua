@@ -1,7 +1,11 @@
 -- HTML building blocks of the calibration report: escaping, number formats, tables, figures,
 -- ANOVA tables and regression equations. Output is well-formed XHTML (polyglot HTML5).
+-- Text for an element or a double- or single-quoted attribute. Characters XML does not allow
+-- (C0 controls other than tab, newline and carriage return; U+FFFE, U+FFFF) become U+FFFD, so any
+-- text from an input file leaves the page well-formed.
 local function esc(s)
-  return (tostring(s):gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;"))
+  s = tostring(s):gsub("[\0-\8\11\12\14-\31]", "\239\191\189"):gsub("\239\191[\190\191]", "\239\191\189")
+  return (s:gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;"):gsub("'", "&#39;"))
 end
 
 local function num(v, digits)
@@ -82,7 +86,7 @@ local function equation(coefficients, terms, response)
     local c = coefficients[t]
     if c then
       if t == "Intercept" then parts[#parts + 1] = string.format("%.6g", c)
-      else parts[#parts + 1] = string.format("%s %.6g·%s", c < 0 and "−" or "+", math.abs(c), t:gsub(":", "·")) end
+      else parts[#parts + 1] = string.format("%s %.6g·%s", c < 0 and "−" or "+", math.abs(c), esc((t:gsub(":", "·")))) end
     end
   end
   return esc(response) .. " = " .. table.concat(parts, " ")

@@ -51,6 +51,13 @@ function M.read(path)
   local ok, t = pcall(paddy.read_json, path)
   if not ok then error((tostring(t):gsub("^%s+", "")), 0) end
   if type(t) ~= "table" then fail(path, "the top level must be an object") end
+  -- Free text (description, units) is shown HTML-escaped in the report; names (responses,
+  -- parameters, symbols) become result keys, CSV columns, --set names and gnuplot labels, so
+  -- they must be plain names.
+  if t.description ~= nil and type(t.description) ~= "string" then fail(path, "'description' must be a text") end
+  if t.experiment ~= nil and (type(t.experiment) ~= "string" or t.experiment == "" or t.experiment:find("[%c]")) then
+    fail(path, "'experiment' must be the file name of an experiment script, such as slump.lua")
+  end
   local input = {path = path, description = t.description or "", experiment = t.experiment or "slump.lua"}
   -- Contact conventions of every simulation (experiments/lib/mud.lua: paddy or edem).
   input.conventions = t.conventions or "paddy"
@@ -61,6 +68,9 @@ function M.read(path)
   if type(t.measured) ~= "table" then fail(path, "'measured' must be an object {response = measured value}") end
   input.measured, input.responses = {}, {}
   for name, v in pairs(t.measured) do
+    if type(name) ~= "string" or not name:match("^[%a][%w_]*$") then
+      fail(path, string.format("measured: the response name %q must be a name such as slump_mm (a result key of the experiment)", tostring(name)))
+    end
     input.measured[name] = number(path, "measured." .. name, v)
     if v == 0 then fail(path, "measured." .. name .. " is 0: relative errors are undefined") end
     input.responses[#input.responses + 1] = name
@@ -74,7 +84,10 @@ function M.read(path)
   for i, f in ipairs(t.factors) do
     local where = string.format("factors[%d]", i)
     if type(f.symbol) ~= "string" or not f.symbol:match("^[%a][%w_]*$") then fail(path, where .. ".symbol must be a name such as H1") end
-    if type(f.parameter) ~= "string" or f.parameter == "" then fail(path, where .. ".parameter must name a parameter of the experiment") end
+    if type(f.parameter) ~= "string" or not f.parameter:match("^[%a][%w_]*$") then
+      fail(path, where .. ".parameter must name a parameter of the experiment (a name such as mud_mud_friction)")
+    end
+    if f.unit ~= nil and type(f.unit) ~= "string" then fail(path, where .. ".unit must be a text such as J/m^2") end
     if input.by_symbol[f.symbol] then fail(path, where .. ": symbol '" .. f.symbol .. "' is used twice") end
     local x = {symbol = f.symbol, parameter = f.parameter, unit = f.unit or ""}
     x.low, x.high = number(path, where .. ".low", f.low), number(path, where .. ".high", f.high)

@@ -13,10 +13,7 @@ local function copy(src, dst)
   if not a then return nil end
   local data = a:read("a")
   a:close()
-  local b = assert(io.open(dst, "wb"))
-  b:write(data)
-  b:close()
-  return dst
+  return util.write_file(dst, data)
 end
 
 -- Writes everything; returns {html =, json =, csv = {...}, figures = {...}}.
@@ -47,13 +44,7 @@ function M.write(a)
   end
   files.figures = ch
   local text = page.render(o, files, ch, pics)
-  local path = util.out("report.html")
-  local tmp = path .. ".tmp"
-  local f = assert(io.open(tmp, "w"))
-  f:write(text)
-  f:close()
-  assert(os.rename(tmp, path))
-  files.html = path
+  files.html = util.write_file(util.out("report.html"), text)  -- temporary + rename
   return files
 end
 

@@ -8,6 +8,10 @@ local M = {}
 
 local SCRIPTS = {["slump.lua"] = true, ["rheometer.lua"] = true}
 local NAME = "^[%a][%w_]*$"
+-- A result key: names joined by dots (a.b reads result.a.b).
+local function result_key(key)
+  return type(key) == "string" and key:match("^[%a][%w_%.]*$") ~= nil and not key:find("%.%.") and not key:find("%.$")
+end
 
 -- measured/sigma value: a number or a non-empty list of numbers (a vector observable).
 local function values(path, where, v)
@@ -35,6 +39,10 @@ function M.read(path)
   for k in pairs(t) do
     if not known[k] then fail(path, "unknown key '" .. tostring(k) .. "' (allowed: experiments, free_parameters, candidates, description, settings)") end
   end
+  -- Free text (the description, string values of set) is shown HTML-escaped in the report;
+  -- names (experiments, observables, parameters, candidates) become result keys, figure labels
+  -- and --set names, so they must be plain names.
+  if t.description ~= nil and type(t.description) ~= "string" then fail(path, "'description' must be a text") end
   local input = {path = path, description = t.description or "", experiments = {}, free_parameters = {}, candidates = {}}
 
   if type(t.experiments) ~= "table" or #t.experiments == 0 then fail(path, "'experiments' must be a non-empty list") end
@@ -47,6 +55,9 @@ function M.read(path)
     if not SCRIPTS[e.script] then fail(path, where .. ".script = " .. tostring(e.script) .. " (allowed: slump.lua, rheometer.lua)") end
     if e.set ~= nil and type(e.set) ~= "table" then fail(path, where .. ".set must be an object {parameter = value}") end
     for k, v in pairs(e.set or {}) do
+      if type(k) ~= "string" or not k:match(NAME) then
+        fail(path, string.format("%s.set: %q must be a parameter name such as cone_lift_speed", where, tostring(k)))
+      end
       if type(v) ~= "number" and type(v) ~= "string" and type(v) ~= "boolean" then
         fail(path, string.format("%s.set.%s must be a number, string or boolean", where, tostring(k)))
       end
@@ -55,7 +66,12 @@ function M.read(path)
     if type(e.sigma) ~= "table" then fail(path, where .. ".sigma must be an object with the keys of measured") end
     local x = {name = e.name, script = e.script, set = e.set or {}, observables = {}}
     local keys = {}
-    for key in pairs(e.measured) do keys[#keys + 1] = key end
+    for key in pairs(e.measured) do
+      if not result_key(key) then
+        fail(path, string.format("%s.measured: %q must be a result key of the experiment such as slump_mm or a.b", where, tostring(key)))
+      end
+      keys[#keys + 1] = key
+    end
     table.sort(keys)
     for _, key in ipairs(keys) do
       local m, vec = values(path, where .. ".measured." .. key, e.measured[key])

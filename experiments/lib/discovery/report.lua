@@ -94,15 +94,15 @@ local function residual_map(o)
   local tics, last = {}, nil
   for i, r in ipairs(o.located.residuals) do
     local id = r.block .. " " .. r.key
-    if id ~= last then tics[#tics + 1] = string.format("'%s' %d", id:gsub("'", ""), i); last = id end
+    if id ~= last then tics[#tics + 1] = string.format("%s %d", util.gnuplot_text(id), i); last = id end
   end
   return util.gnuplot("figures/residuals", string.format([[
 set title 'Standardised residuals (measured - simulated) / sd, per observable'
 set ylabel 'z'; set grid ytics; set xtics rotate by -40 (%s) font ',8'; set key top right
 set style fill solid 0.6 border -1; set boxwidth 0.4; set xrange [0:%d]
-plot '%s' using ($1-0.2):2 with boxes lc rgb '#a33' title 'before', \
+plot %s using ($1-0.2):2 with boxes lc rgb '#a33' title 'before', \
      %s 2 with lines dt 2 lc rgb 'black' notitle, -2 with lines dt 2 lc rgb 'black' notitle]],
-    table.concat(tics, ", "), #rows + 1, util.out("figures/residuals.dat"),
+    table.concat(tics, ", "), #rows + 1, util.gnuplot_text(util.out("figures/residuals.dat")),
     o.after and string.format("'' using ($1+0.2):3 with boxes lc rgb '#36a' title 'after (effect added)',", o.after) or ""))
 end
 
@@ -113,10 +113,11 @@ local function signature_chart(o, c, s)
   local stem = "figures/signature_" .. c.name
   util.write_columns(stem .. ".dat", "index residual strength_times_signature (sigma units)", rows)
   return util.gnuplot(stem, string.format([[
-set title "%s: residual and signature x estimated strength %.3g (sigma units; z = %.2f)"
+set title %s
 set xlabel 'observable'; set ylabel 'measured - simulated [sigma]'; set grid; set key top right
-plot '%s' using 1:2 with impulses lw 4 lc rgb '#999' title 'residual', '' using 1:3 with linespoints pt 7 lc rgb '#a33' title 'signature x strength']],
-    c.name, lam, s.z or 0, util.out(stem .. ".dat")))
+plot %s using 1:2 with impulses lw 4 lc rgb '#999' title 'residual', '' using 1:3 with linespoints pt 7 lc rgb '#a33' title 'signature x strength']],
+    util.gnuplot_text(string.format("%s: residual and signature x estimated strength %.3g (sigma units; z = %.2f)", c.name, lam, s.z or 0)),
+    util.gnuplot_text(util.out(stem .. ".dat"))))
 end
 
 -- Vector observables (more than one entry under one key): measured and simulated before/after.
@@ -136,11 +137,11 @@ local function curves(o)
     local stem = "figures/curve_" .. k
     util.write_columns(stem .. ".dat", "axis measured simulated_before simulated_after sigma", groups[id])
     out[#out + 1] = {name = id, png = util.gnuplot(stem, string.format([[
-set title '%s: measured and simulated'
+set title %s
 set xlabel 'grid (radius mm, time s, speed, or index)'; set grid; set key outside bottom center horizontal
-plot '%s' using 1:2:5 with yerrorbars pt 7 lc rgb 'black' title 'measured +- sd', \
+plot %s using 1:2:5 with yerrorbars pt 7 lc rgb 'black' title 'measured +- sd', \
      '' using 1:3 with linespoints lw 2 lc rgb '#a33' title 'calibrated (before)'%s]],
-      id, util.out(stem .. ".dat"), o.after and ", '' using 1:4 with linespoints lw 2 lc rgb '#36a' title 'effect added (after)'" or ""))}
+      util.gnuplot_text(id .. ": measured and simulated"), util.gnuplot_text(util.out(stem .. ".dat")), o.after and ", '' using 1:4 with linespoints lw 2 lc rgb '#36a' title 'effect added (after)'" or ""))}
   end
   return out
 end
@@ -254,13 +255,8 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
   end
   add(table_html({"#", "step", "run", "seed", "job", "wall time [s]"}, rows, "Every distinct simulation (campaign jobs)"))
   add('</body></html>')
-  local path = util.out("report.html")
-  local tmp = path .. ".tmp"          -- written atomically: temporary file + rename
-  local f = assert(io.open(tmp, "w"))
-  f:write(table.concat(h, "\n"))
-  f:close()
-  assert(os.rename(tmp, path))
-  return {html = path}
+  -- written atomically (temporary file + rename); a failure names the file and the cause
+  return {html = util.write_file(util.out("report.html"), table.concat(h, "\n"))}
 end
 
 return M

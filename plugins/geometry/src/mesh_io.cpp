@@ -2,6 +2,7 @@
 // adds a light scan of the raw file that finds non-finite coordinates with their vertex index
 // and line (CGAL's text readers reject "nan"/"inf" without saying where; its binary STL reader
 // would merge a NaN point with another point), and the writers.
+#include <paddy/io/atomic_file.hpp>
 #include <paddy/errors.hpp>
 #include <paddy/geometry/cgal_ops.hpp>
 #include <paddy/geometry/mesh_io.hpp>
@@ -118,16 +119,7 @@ std::string formatName(const std::string& ext) {
 }
 
 void atomicWrite(const std::string& path, const std::string& bytes) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!f) throw InputError(path + ": cannot open for writing");
-    f.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    if (!f) throw InputError(path + ": write failed");
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw InputError(path + ": cannot rename " + tmp + ": " + ec.message());
+  io::writeFileAtomic(path, bytes);  // temporary + rename; errors name the file and the cause
 }
 
 }  // namespace

@@ -9,6 +9,22 @@
 
 namespace paddy::geometry {
 
+namespace {
+// A gnuplot string constant: single quotes (gnuplot runs `commands` only in double-quoted
+// strings), a quote doubled; a line break (which would start a new gnuplot command) becomes a blank.
+std::string gnuplotText(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("''") : (c == '\n' || c == '\r') ? std::string(" ") : std::string(1, c);
+  return out + "'";
+}
+// One shell word.
+std::string shellWord(const std::string& text) {
+  std::string out = "'";
+  for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return out + "'";
+}
+}  // namespace
+
 bool writePicture(const TriangleMesh& mesh, const std::string& png, const PictureOptions& o) {
   namespace fs = std::filesystem;
   const std::string base = png + ".gp";
@@ -31,8 +47,8 @@ bool writePicture(const TriangleMesh& mesh, const std::string& png, const Pictur
   {
     std::ofstream g(base);
     g << "set terminal pngcairo size " << o.width << "," << o.height << " enhanced font 'sans,10'\n"
-      << "set output '" << png << ".tmp'\n"
-      << "set title '" << o.title << "'\n"
+      << "set output " << gnuplotText(png + ".tmp") << "\n"
+      << "set title " << gnuplotText(o.title) << "\n"
       << "set view " << o.view_rot_x << "," << o.view_rot_z << "\n"
       << "set view equal xyz\n"
       << "set xrange [" << mid.x() - half << ":" << mid.x() + half << "]\n"
@@ -45,9 +61,9 @@ bool writePicture(const TriangleMesh& mesh, const std::string& png, const Pictur
       << "set pm3d depthorder border lc rgb '#404040' lw 0.3\n"
       << "set pm3d lighting primary 0.6 specular 0.1\n"
       << "unset colorbox\n"
-      << "splot '" << dat << "' with polygons fc rgb '#a0b4d0' notitle\n";
+      << "splot " << gnuplotText(dat) << " with polygons fc rgb '#a0b4d0' notitle\n";
   }
-  const std::string cmd = "gnuplot '" + base + "' > /dev/null 2>&1";
+  const std::string cmd = "gnuplot " + shellWord(base) + " > /dev/null 2>&1";
   const int rc = std::system(cmd.c_str());
   std::error_code ec;
   fs::remove(base, ec);

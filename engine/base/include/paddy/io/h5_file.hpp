@@ -15,6 +15,28 @@
 
 namespace paddy::h5 {
 
+// The operating system's reason for the HDF5 call that just failed, read from the error stack
+// (the file driver records "errno = 27, error message = 'File too large'"): ": File too large",
+// or "" when the failure was not a system call's. Call it right after the failing call: the next
+// HDF5 call clears the stack.
+inline std::string systemCause() {
+  std::string found;
+  H5Ewalk2(
+      H5E_DEFAULT, H5E_WALK_UPWARD,
+      [](unsigned, const H5E_error2_t* e, void* data) -> herr_t {
+        if (!e->desc) return 0;
+        const std::string d = e->desc;
+        const std::string key = "error message = '";
+        const auto k = d.find(key);
+        if (k == std::string::npos) return 0;
+        const auto end = d.find('\'', k + key.size());
+        *static_cast<std::string*>(data) = d.substr(k + key.size(), end == std::string::npos ? std::string::npos : end - k - key.size());
+        return 1;
+      },
+      &found);
+  return found.empty() ? std::string() : ": " + found;
+}
+
 template <class T>
 hid_t nativeType() {
   if constexpr (std::is_same_v<T, double>) return H5T_NATIVE_DOUBLE;
@@ -27,7 +49,7 @@ class File {
  public:
   static File create(const std::string& path) {
     hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-    if (id < 0) throw InputError("cannot create HDF5 file '" + path + "'");
+    if (id < 0) throw InputError("cannot create HDF5 file '" + path + "'" + systemCause());
     return File(id, path);
   }
   static File open(const std::string& path) {
@@ -40,6 +62,14 @@ class File {
   ~File() {
     if (id_ >= 0) H5Fclose(id_);
   }
+  // Closes the file, writing what HDF5 still buffers: a full disk or `ulimit -f` may show only
+  // here. Call it before using a written file (the destructor cannot report a failure).
+  void close() {
+    if (id_ < 0) return;
+    const herr_t st = H5Fclose(id_);
+    id_ = -1;
+    if (st < 0) throw InputError("cannot write HDF5 file '" + path_ + "'" + systemCause());
+  }
 
   template <class T>
   void write(const std::string& name, const std::vector<T>& data, hsize_t columns = 1) {
@@ -51,10 +81,16 @@ class File {
     herr_t st = set < 0 ? -1
                 : data.empty() ? 0
                                : H5Dwrite(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
-    if (set >= 0) H5Dclose(set);
+    if (st < 0) {
+      const std::string cause = systemCause();
+      if (set >= 0) H5Dclose(set);
+      H5Sclose(space);
+      H5Pclose(lcpl);
+      throw InputError("cannot write dataset '" + name + "' to '" + path_ + "'" + cause);
+    }
+    H5Dclose(set);
     H5Sclose(space);
     H5Pclose(lcpl);
-    if (st < 0) throw InputError("cannot write dataset '" + name + "' to '" + path_ + "'");
   }
 
   template <class T>
@@ -74,9 +110,11 @@ class File {
   void writeAttr(const std::string& name, double value) {
     hid_t space = H5Screate(H5S_SCALAR);
     hid_t attr = H5Acreate2(id_, name.c_str(), H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT);
-    H5Awrite(attr, H5T_NATIVE_DOUBLE, &value);
-    H5Aclose(attr);
+    const herr_t st = attr >= 0 ? H5Awrite(attr, H5T_NATIVE_DOUBLE, &value) : -1;
+    const std::string cause = st < 0 ? systemCause() : std::string();
+    if (attr >= 0) H5Aclose(attr);
     H5Sclose(space);
+    if (st < 0) throw InputError("cannot write attribute '" + name + "' to '" + path_ + "'" + cause);
   }
   // Scalar attribute `name` on the group or dataset at `object` ("/" = the root).
   void writeAttr(const std::string& object, const std::string& name, double value) {
@@ -115,10 +153,11 @@ class File {
     hid_t space = H5Screate(H5S_SCALAR);
     hid_t attr = H5Acreate2(obj, name.c_str(), type, space, H5P_DEFAULT, H5P_DEFAULT);
     const herr_t st = attr >= 0 ? H5Awrite(attr, type, value) : -1;
+    const std::string cause = st < 0 ? systemCause() : std::string();
     if (attr >= 0) H5Aclose(attr);
     H5Sclose(space);
     H5Oclose(obj);
-    if (st < 0) throw InputError("cannot write attribute '" + name + "' of '" + object + "' to '" + path_ + "'");
+    if (st < 0) throw InputError("cannot write attribute '" + name + "' of '" + object + "' to '" + path_ + "'" + cause);
   }
   hid_t id_ = -1;
   std::string path_;

@@ -1,0 +1,133 @@
+#!/usr/bin/env bash
+# kill -9 of a running campaign at random moments, then a restart with the same output directory
+# (docs/reliability.md, section 3). The campaign (campaign_stages.lua) is shaped like a
+# calibration: four jobs, an analysis between the stages that saves its choice, two more jobs,
+# a summary. Each trial starts it, kills the runner and every job it runs with SIGKILL at a
+# seeded random moment in [0, 1.05 T] (T: the uninterrupted run's time), starts it again until it
+# completes, and requires:
+#   * it completes, and its result.json, stage1.json, summary.json and every job's results equal
+#     the uninterrupted run's (compare_runs.lua; every JSON file under the directory parses);
+#   * every job that had finished before the kill is byte-identical afterwards (result.json,
+#     pile.json, snapshots: MD5 taken at the kill);
+#   * every HDF5 file opens (h5ls) and every job's snapshots hold the same data as the
+#     uninterrupted run's (h5diff).
+#   campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED]
+set -euo pipefail
+paddy=${1:?usage: campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED]}
+src=${2:?}
+work=${3:?}
+trials=${4:-3}
+seed=${5:-17}
+here="$src/tests/reliability"
+driver="$here/campaign_stages.lua"
+args=(--threads 2)
+fail() { echo "campaign_kill: FAIL: $*" >&2; exit 1; }
+rm -rf "$work"
+mkdir -p "$work"
+cd "$work"
+now() { date +%s.%N; }
+elapsed() { awk -v a="$1" -v b="$(now)" 'BEGIN { printf "%.2f", b - a }'; }
+
+start=$(now)
+"$paddy" run "$driver" --out whole "${args[@]}" > whole.log 2>&1 || { cat whole.log >&2; fail "the uninterrupted campaign failed"; }
+T=$(elapsed "$start")
+n_jobs=$(find whole/campaign/jobs -name result.json | wc -l)
+echo "uninterrupted: $T s, $n_jobs jobs"
+
+# Files of the finished jobs (result.json complete) and of the run itself, with their MD5.
+finished_sums() {
+  local dir=$1 j
+  for j in "$dir"/campaign/jobs/*/; do
+    grep -qs '"status": "complete"' "$j/result.json" || continue
+    find "$j" -type f \( -name result.json -o -name pile.json -o -name '*.h5' -o -name particles.xmf \) -print0 \
+      | xargs -0 -r md5sum
+  done
+  for j in stage1.json summary.json result.json; do [ -f "$dir/$j" ] && md5sum "$dir/$j"; done
+  true
+}
+# The phase the runner was in, from its last progress marker.
+phase_of() {
+  case "$(tail -n 1 "$1" 2> /dev/null)" in
+    "") echo "start-up" ;;
+    "stage 1 submitted") echo "stage 1 jobs" ;;
+    "stage 1 done" | "analysis") echo "analysis between stages" ;;
+    "stage 2 submitted") echo "stage 2 jobs" ;;
+    "stage 2 done" | "summary") echo "summary" ;;
+    "end") echo "final result.json" ;;
+    *) echo "other" ;;
+  esac
+}
+gone() {  # the process has ended (a zombie counts as ended: its parent may be gone)
+  [ ! -e "/proc/$1" ] || [ "$(awk '{print $3}' "/proc/$1/stat" 2> /dev/null)" = Z ]
+}
+
+declare -A phases=()
+killed=0 with_tmp=0 jobs_killed=0 restarts=0 stale_tmp=0
+for ((k = 0; k < trials; ++k)); do
+  out="trial_$k"
+  delay=$(awk -v s="$seed" -v k="$k" -v T="$T" 'BEGIN { srand(s * 1000 + k); printf "%.3f", rand() * 1.05 * T }')
+  setsid "$paddy" run "$driver" --out "$out" "${args[@]}" > "$out.first.log" 2>&1 &
+  pid=$!
+  sleep "$delay"
+  if ! kill -STOP -- "-$pid" 2> /dev/null; then
+    wait "$pid" || true
+    echo "trial $k: the campaign ended before the kill at $delay s (not counted)"
+    continue
+  fi
+  # Frozen: the runner cannot start another job. Record, then SIGKILL the runner's process group
+  # and the group of every job it runs.
+  kids=$(pgrep -P "$pid" || true)
+  phase=$(phase_of "$out.first.log")
+  tmp_now=$(find "$out" -name '*.tmp*' 2> /dev/null | wc -l)
+  finished_sums "$out" > "$out.before.md5"
+  groups=("-$pid")
+  for c in $kids; do groups+=("-$c"); done
+  kill -KILL -- "${groups[@]}" 2> /dev/null || true
+  wait "$pid" 2> /dev/null || true
+  for c in $kids; do
+    for ((i = 0; i < 500; ++i)); do gone "$c" && break; sleep 0.01; done
+    gone "$c" || fail "trial $k: job process $c survived SIGKILL"
+  done
+  n_kids=$(echo $kids | wc -w)
+  killed=$((killed + 1))
+  jobs_killed=$((jobs_killed + n_kids))
+  label="$phase"
+  [ "$tmp_now" -gt 0 ] && { label="$phase, a file being written"; with_tmp=$((with_tmp + 1)); }
+  phases[$phase]=$(( ${phases[$phase]:-0} + 1 ))
+  # Start it again until it completes (a restart that fails by itself is an error).
+  runs=0
+  until grep -qs '"status": "complete"' "$out/result.json"; do
+    runs=$((runs + 1))
+    [ "$runs" -le 3 ] || fail "trial $k: not complete after 3 restarts"
+    "$paddy" run "$driver" --out "$out" "${args[@]}" > "$out.restart$runs.log" 2>&1 \
+      || { cat "$out.restart$runs.log" >&2; fail "trial $k: the restarted campaign failed"; }
+  done
+  restarts=$((restarts + runs))
+  # Finished before the kill: byte-identical now.
+  if [ -s "$out.before.md5" ]; then
+    md5sum --quiet -c "$out.before.md5" > "$out.md5check" 2>&1 \
+      || { cat "$out.md5check" >&2; fail "trial $k: a file finished before the kill changed"; }
+  fi
+  n_before=$(grep -c '/result.json$' "$out.before.md5" || true)
+  # Same results as the uninterrupted run; every JSON parses.
+  "$paddy" run "$here/compare_runs.lua" --out "$out.check" --set "dir=$out" --set reference=whole > "$out.compare" 2>&1 \
+    || { cat "$out.compare" >&2; fail "trial $k: the result differs from the uninterrupted run"; }
+  # Every HDF5 file opens; the snapshots hold the uninterrupted run's data.
+  while IFS= read -r f; do
+    h5ls -r "$f" > /dev/null 2>&1 || fail "trial $k: $f does not open as HDF5"
+    ref="whole/${f#"$out"/}"
+    [ -f "$ref" ] || fail "trial $k: $f has no counterpart in the uninterrupted run"
+    h5diff -q "$f" "$ref" > /dev/null 2>&1 || fail "trial $k: $f differs from $ref"
+  done < <(find "$out" -name '*.h5' -type f)
+  tmps=$(find "$out" -name '*.tmp*' | wc -l)
+  stale_tmp=$((stale_tmp + tmps))
+  echo "trial $k: killed at $delay s ($label; $n_kids job(s) running, $n_before result files finished before the kill)," \
+       "completed after $runs restart(s): $(tail -n 1 "$out.compare")${tmps:+, $tmps stale temporaries}"
+done
+echo "campaign_kill: $killed of $trials trials killed with SIGKILL and completed with the uninterrupted result" \
+     "($jobs_killed running jobs killed, $restarts restarts, $with_tmp kills while a temporary file existed," \
+     "$stale_tmp stale temporaries left); $(elapsed "$start") s in all"
+for p in "start-up" "stage 1 jobs" "analysis between stages" "stage 2 jobs" "summary" "final result.json" "other"; do
+  [ -n "${phases[$p]:-}" ] && echo "  killed during $p: ${phases[$p]}"
+done
+[ "$killed" -ge 1 ] || fail "no trial was killed: the campaign is too short for this machine"
