@@ -93,7 +93,7 @@ if P.lift_speeds ~= "" then
   experiments = {}
   for _, v in ipairs(util.numbers(P.lift_speeds, "lift_speeds")) do
     if v <= 0 or v > 2 then error(string.format("discovery_blind.lua: lift_speeds = %s: each speed must be in (0, 2] m/s", P.lift_speeds), 0) end
-    experiments[#experiments + 1] = {name = string.format("slump_%gmps", v), script = "slump.lua", set = {lift_speed = v}}
+    experiments[#experiments + 1] = {name = string.format("slump_%dmm_per_s", math.floor(v * 1000 + 0.5)), script = "slump.lua", set = {lift_speed = v}}  -- a plain name: no dot
   end
 end
 for _, e in ipairs(experiments) do for k, v in pairs(common) do e.set[k] = v end end
