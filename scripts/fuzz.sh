@@ -9,7 +9,9 @@
 #                                            tests/fuzz/dict/TARGET.dict, when present, is the
 #                                            libFuzzer dictionary (tokens of the input's format)
 #   scripts/fuzz.sh merge TARGET             adds to tests/fuzz/corpus/TARGET the inputs of
-#                                            build-asan/corpus/TARGET that cover new edges (-merge=1)
+#                                            build-asan/corpus/TARGET that reach new edges
+#                                            (-merge=1 -use_counters=0: hit counts are not
+#                                            features, which keeps the saved corpus small)
 # PADDY_FUZZ_NO_BUILD=1 runs the built fuzzer as it is (e.g. while the tree is rebuilt for
 # something else); PADDY_JOBS sets the build's parallelism (default: nproc).
 set -euo pipefail
@@ -33,7 +35,7 @@ build)
   cmake --build $dir -j"$jobs" --target "${targets[@]/#/fuzz_}" ;;
 merge)
   t="${2:?usage: scripts/fuzz.sh merge TARGET}"
-  ASAN_OPTIONS="halt_on_error=1:detect_leaks=1" $dir/bin/fuzz_$t -merge=1 -timeout=10 -rss_limit_mb=2048 \
+  ASAN_OPTIONS="halt_on_error=1:detect_leaks=1" $dir/bin/fuzz_$t -merge=1 -use_counters=0 -timeout=10 -rss_limit_mb=2048 \
     -max_len=65536 tests/fuzz/corpus/$t $dir/corpus/$t
   echo "tests/fuzz/corpus/$t: $(ls tests/fuzz/corpus/$t | wc -l) files, $(du -sk tests/fuzz/corpus/$t | cut -f1) kB" ;;
 *)
