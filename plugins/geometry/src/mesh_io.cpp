@@ -133,27 +133,35 @@ void checkOffFacets(const std::string& path, const std::string& bytes) {
       }
     }
   };
-  const auto token = [&] {
-    skip();
-    const std::size_t start = pos;
-    while (pos < n && !std::isspace(static_cast<unsigned char>(bytes[pos])) && bytes[pos] != '#') ++pos;
-    return bytes.substr(start, pos - start);
-  };
-  const std::string magic = token();
-  // Only the plain keywords (OFF, COFF, NOFF, STOFF, ...): nOFF and 4OFF carry other entries, a
-  // file without keyword or a binary one is left to CGAL (binary indices are int32, no conversion).
-  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0 ||
-      magic.find_first_of("n4") != std::string::npos)
-    return;
-  const std::size_t after_magic = pos;
-  if (token() == "BINARY") return;
-  pos = after_magic;
+  // The keyword, as CGAL reads it: its first character, then letters and digits; the character
+  // that ends it is consumed.
+  skip();
+  if (pos >= n) return;
+  std::string magic(1, bytes[pos++]);
+  while (magic.size() < 41 && pos < n) {
+    const char c = bytes[pos++];
+    if (!std::isalnum(static_cast<unsigned char>(c))) break;
+    magic += c;
+  }
+  std::size_t j = 0;
+  if (magic.compare(0, 2, "ST") == 0) j += 2;
+  if (j < magic.size() && magic[j] == 'C') ++j;
+  if (j < magic.size() && magic[j] == 'N') ++j;
+  // nOFF and 4OFF carry other entries, SKEL is not a surface; a binary OFF is left to CGAL too
+  // (its indices are int32, no conversion from double).
+  if (magic.compare(j, std::string::npos, "OFF") != 0) return;
+  skip();
+  if (pos >= n || !std::isdigit(static_cast<unsigned char>(bytes[pos]))) return;  // BINARY, or refused
   long counts[3];
-  for (long& c : counts) {
-    const std::string t = token();
+  for (long& c : counts) {  // `in >> int`: blanks, then an optional sign and digits
+    while (pos < n && std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    const std::size_t start = pos;
+    if (pos < n && (bytes[pos] == '+' || bytes[pos] == '-')) ++pos;
+    while (pos < n && std::isdigit(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    const std::string t = bytes.substr(start, pos - start);
     char* end = nullptr;
     c = std::strtol(t.c_str(), &end, 10);
-    if (t.empty() || *end != '\0' || c < 0) return;  // CGAL refuses the header
+    if (t.empty() || *end != '\0' || c < 0 || c > 100000000) return;  // CGAL refuses the header
   }
   const auto record = [&] {
     skip();
