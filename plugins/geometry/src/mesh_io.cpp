@@ -150,6 +150,10 @@ void checkOffFacets(const std::string& path, const std::string& bytes) {
   // nOFF and 4OFF carry other entries, SKEL is not a surface; a binary OFF is left to CGAL too
   // (its indices are int32, no conversion from double).
   if (magic.compare(j, std::string::npos, "OFF") != 0) return;
+  // CGAL 5.5 reads a vertex's texture coordinates without checking the line holds them (a read
+  // past the end of its entries, found by fuzzing); a wall needs no texture.
+  if (magic.compare(0, 2, "ST") == 0)
+    throw InputError(path + ": textured OFF ('" + magic + "') is not supported: write it as plain OFF");
   skip();
   if (pos >= n || !std::isdigit(static_cast<unsigned char>(bytes[pos]))) return;  // BINARY, or refused
   long counts[3];
