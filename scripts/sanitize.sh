@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Sanitizer runs of the test suite (docs/reliability.md). Called by scripts/test.sh; any report fails.
 #   scripts/sanitize.sh address   clang, -fsanitize=address,undefined, build-asan: the Catch2
-#                                 suites of the design-of-experiments library and the replay of
-#                                 the fuzz corpora of its inputs (the same build holds the
-#                                 libFuzzer targets, scripts/fuzz.sh)
+#                                 suites of the design-of-experiments library and of the engine
+#                                 (core, physics, contact laws, output, Lua, campaign runner), the
+#                                 `paddy` command-line cases (cli.*, cli.mesh.*) and the replay of
+#                                 every fuzz corpus (the same build holds the libFuzzer targets,
+#                                 scripts/fuzz.sh). PADDY_ASAN_ENGINE=0 runs the
+#                                 design-of-experiments part only.
 #   scripts/sanitize.sh thread    clang + LLVM libomp, -fsanitize=thread, build-tsan: a small JKR
 #                                 pile run by `paddy` with 2 threads, under the Archer OpenMP tool;
 #                                 a deliberately racy canary must be caught first
@@ -24,11 +27,19 @@ address)
   dir=build-asan
   [ -f $dir/CMakeCache.txt ] || CC=clang CXX=clang++ cmake -S . -B $dir "${common[@]}" \
     -DPADDY_SANITIZE=address,undefined -DPADDY_FUZZ=ON "-DPADDY_COMPONENTS=plugins;doe;engine/app"
-  # What runs instrumented today: the design-of-experiments library (its Catch2 suites) and the
-  # replay of the fuzz corpora of the CSV and `paddy doe` inputs. The engine's suites are the next
-  # step (docs/reliability.md, "What is not done yet").
+  # The design-of-experiments library (its Catch2 suites) and the replay of the fuzz corpora of
+  # the CSV and `paddy doe` inputs; then (PADDY_ASAN_ENGINE, default 1) the engine's suites, the
+  # command-line cases and the other fuzz replays (docs/reliability.md, section 1).
   targets=(doe_tests doe_discovery_tests doe_optimizer_tests
            fuzz_csv fuzz_doe_analyze fuzz_doe_optimize fuzz_doe_diagnose)
+  engine_suites=(test_engine test_physics test_contact_normal test_contact_friction test_contact_plugins
+                 test_contact_edem_conventions test_contact_effects paddy_io_tests paddy_lua_tests
+                 paddy_campaign_tests)
+  engine=("${engine_suites[@]}" campaign_driver paddy paddy_hertz_mindlin paddy_jkr paddy_rolling_friction
+          paddy_liquid_bridge paddy_lubrication paddy_plastic_adhesion paddy_geometry
+          fuzz_read_json fuzz_set fuzz_calibration_input fuzz_discovery_input fuzz_mesh)
+  with_engine="${PADDY_ASAN_ENGINE:-1}"
+  [ "$with_engine" = 0 ] || targets+=("${engine[@]}")
   cmake --build $dir -j"$jobs" --target "${targets[@]}"
   export ASAN_OPTIONS="halt_on_error=1:abort_on_error=0:detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
   export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1"
@@ -44,6 +55,16 @@ address)
     $dir/bin/$exe ${filter:+"$filter"}
   done
   ctest --test-dir $dir -R '^fuzz\.(csv|doe_analyze|doe_optimize|doe_diagnose)$' --output-on-failure
+  if [ "$with_engine" != 0 ]; then
+    for exe in "${engine_suites[@]}"; do
+      echo "sanitize.sh: $exe (ASan + UBSan)"
+      $dir/bin/$exe
+    done
+    # The command-line cases run the instrumented `paddy` (and its plugins) through CMake scripts;
+    # the engine-side fuzz replays feed every saved input once.
+    ctest --test-dir $dir -j"$jobs" -R '^(cli\.|fuzz\.(read_json|set|calibration_input|discovery_input|mesh)$)' \
+      --output-on-failure
+  fi
   ;;
 thread)
   dir=build-tsan

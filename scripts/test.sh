@@ -2,8 +2,8 @@
 # The test suite: installs what is missing (Debian 12, as root or with sudo), builds Paddy and its
 # tests, and runs every test not labelled "long" (the long ones: ctest --test-dir build -L long);
 # then the sanitizer runs (scripts/sanitize.sh, docs/reliability.md: AddressSanitizer + UBSan
-# over the design-of-experiments suites and fuzz replays, ThreadSanitizer over the OpenMP force
-# loop). PADDY_SANITIZERS=0 skips those (for a quick local run only).
+# over the design-of-experiments and engine suites, the command-line cases and the fuzz replays,
+# ThreadSanitizer over the OpenMP force loop). PADDY_SANITIZERS=0 skips those (for a quick local run only).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/install-deps.sh

@@ -1,6 +1,7 @@
 """ParaView (pvpython) reads Paddy's XDMF + HDF5 snapshots as Paddy wrote them (docs/reliability.md).
 
   pvpython check_snapshot.py particles.xmf WORK_DIR       (under xvfb-run when there is no display)
+  pvpython check_snapshot.py --walls walls.xmf WORK_DIR MIN_TRIANGLES
   pvpython check_snapshot.py --png-not-blank FILE.png [MIN_FRACTION]
 
 For the first and the last snapshot of the series: the number of points and of cells (one vertex
@@ -8,8 +9,13 @@ cell per particle) equal the particle count, and id, radius and velocity equal t
 (read with h5dump at full precision) value for value. Then the last snapshot is shown with
 ParaView's defaults (Show + Render: the Surface representation): the picture, kept in WORK_DIR,
 must differ from the same view with the reader hidden in at least N/2 pixels (without vertex cells
-the Surface view of points is empty and the two are identical). --png-not-blank: the fraction of pixels that differ from the corner pixel (the
-background) must be at least MIN_FRACTION (default 0.01). Exit 1 on any mismatch.
+the Surface view of points is empty and the two are identical).
+--walls: the mesh walls (walls.xmf): for the first and the last snapshot, as many triangles (at
+least MIN_TRIANGLES) and points as Paddy wrote, the points equal /walls/vertices, and the walls
+moved no further down than they started (the cone is lifted: its lowest point rises); the default
+view of the last snapshot shows them (at least 1000 pixels differ from the view without them).
+--png-not-blank: the fraction of pixels that differ from the corner pixel (the background) must be
+at least MIN_FRACTION (default 0.01). Exit 1 on any mismatch.
 """
 import os
 import re
@@ -91,7 +97,58 @@ def not_blank(png, min_fraction=0.01):
           % (png, 100 * fraction, w, h, bg, 100 * min_fraction))
 
 
+def wall_snapshots(xmf):
+    """(time, h5 file, triangles, vertices) of every grid of walls.xmf."""
+    text = open(xmf).read()
+    out = []
+    for grid in re.findall(r'<Grid Name="[^"]+" GridType="Uniform">(.*?)</Grid>', text, re.S):
+        t = float(re.search(r'<Time Value="([^"]+)"', grid).group(1))
+        n = int(re.search(r'NumberOfElements="(\d+)"', grid).group(1))
+        v = int(re.search(r'<DataItem Dimensions="(\d+) 3"[^>]*>[^<]*:/walls/vertices<', grid).group(1))
+        f = re.search(r">([^<>:]+\.h5):/walls/vertices<", grid).group(1)
+        out.append((t, os.path.join(os.path.dirname(xmf), f), n, v))
+    return out
+
+
+def check_walls(xmf, work, min_triangles):
+    series = wall_snapshots(xmf)
+    check(len(series) >= 2, "%d snapshots with walls in %s" % (len(series), xmf))
+    reader = OpenDataFile(xmf)
+    check(reader is not None, "ParaView opens %s" % xmf)
+    lowest = []
+    for t, file, n, v in (series[0], series[-1]):
+        data = fetch(reader, t)
+        where = "walls at t = %.6g s (%s)" % (t, os.path.basename(file))
+        check(data.GetNumberOfCells() == n and n >= min_triangles,
+              "%s: %d triangles, Paddy wrote %d (at least %d)" % (where, data.GetNumberOfCells(), n, min_triangles))
+        check(data.GetNumberOfPoints() == v, "%s: %d points, Paddy wrote %d" % (where, data.GetNumberOfPoints(), v))
+        pos = data.GetPoints()
+        got = [pos.GetPoint(i)[c] for i in range(pos.GetNumberOfPoints()) for c in range(3)]
+        check(got == h5(file, "/walls/vertices"), "%s: vertices equal /walls/vertices" % where)
+        bounds = data.GetBounds()
+        print("%s: bounds x %.4g..%.4g y %.4g..%.4g z %.4g..%.4g" % ((where,) + tuple(bounds)))
+        lowest.append(bounds[4])
+    check(lowest[1] >= lowest[0], "the walls' lowest point went from z = %.6g to %.6g m (not down)" % tuple(lowest))
+    view = GetActiveViewOrCreate("RenderView")
+    view.ViewTime = series[-1][0]
+    Show(reader, view)
+    ResetCamera(view)
+    Render(view)
+    shown = os.path.join(work, "paraview_walls_view.png")
+    SaveScreenshot(shown, view, ImageResolution=[800, 600])
+    Hide(reader, view)
+    Render(view)
+    empty = os.path.join(work, "paraview_walls_view_hidden.png")
+    SaveScreenshot(empty, view, ImageResolution=[800, 600])
+    differ = differing_pixels(shown, empty)
+    check(differ >= 1000, "default view of the walls: %d pixels show them" % differ)
+    print("%d failures" % len(failures))
+    return 1 if failures else 0
+
+
 def main(argv):
+    if argv and argv[0] == "--walls":
+        return check_walls(os.path.abspath(argv[1]), os.path.abspath(argv[2]), int(argv[3]))
     if argv and argv[0] == "--png-not-blank":
         not_blank(argv[1], float(argv[2]) if len(argv) > 2 else 0.01)
         return 1 if failures else 0

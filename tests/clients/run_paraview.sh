@@ -4,8 +4,10 @@
 #   2. pvpython (check_snapshot.py) opens particles.xmf: points, vertex cells, id, radius, velocity
 #      and positions equal what Paddy wrote; ParaView's default view of it is not blank;
 #      the same series indexed the old way (no connectivity) must fail those checks;
-#   3. the shipped experiments/paraview/show_slump.py renders the last snapshot offscreen to
-#      show_slump.png, which must not be blank.
+#   3. pvpython (check_snapshot.py --walls) opens walls.xmf: the cone's triangles and vertices as
+#      Paddy wrote them, first and last snapshot, lifted (not lowered), visible in the default view;
+#   4. the shipped experiments/paraview/show_slump.py renders the last snapshot offscreen to
+#      show_slump.png with the cone, which must not be blank.
 # The pictures stay in WORK. Fails (never skips) when pvpython, xvfb-run or h5dump is missing.
 #   run_paraview.sh PADDY SOURCE_DIR WORK_DIR
 set -euo pipefail
@@ -56,9 +58,18 @@ grep -q "FAIL: default view .*: 0 pixels show particles" "$work/old_index.log" \
 echo "control: the old index (no connectivity) fails: $(grep -c FAIL "$work/old_index.log") checks"
 
 t0=$(date +%s)
+walls="$(dirname "$xmf")/walls.xmf"
+[ -s "$walls" ] || fail "no $walls: the snapshots hold no cone"
+pv "$here/check_snapshot.py" --walls "$walls" "$work" 20 > "$work/check_walls.log" 2>&1 \
+  || { cat "$work/check_walls.log"; fail "ParaView does not read the cone (walls.xmf) as written"; }
+cat "$work/check_walls.log"
+echo "pvpython wall checks: $(( $(date +%s) - t0 )) s"
+
+t0=$(date +%s)
 pv "$src/experiments/paraview/show_slump.py" "$xmf" --png "$work/show_slump.png" > "$work/show_slump.log" 2>&1 \
   || { cat "$work/show_slump.log"; fail "show_slump.py failed"; }
 cat "$work/show_slump.log"
 [ -s "$work/show_slump.png" ] || fail "show_slump.py saved no picture"
+grep -Eq "and [1-9][0-9]* wall triangles" "$work/show_slump.log" || fail "show_slump.py drew no cone"
 pv "$here/check_snapshot.py" --png-not-blank "$work/show_slump.png" 0.01 || fail "show_slump.png is blank"
 echo "show_slump.py: $(( $(date +%s) - t0 )) s; pictures in $work"

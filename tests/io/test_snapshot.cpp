@@ -151,3 +151,50 @@ TEST_CASE("io: XDMF index lists every snapshot and refers to existing datasets",
   for (const auto& entry : fs::directory_iterator(dir))
     CHECK(entry.path().string().find(".tmp") == std::string::npos);  // no temporaries left
 }
+
+TEST_CASE("io: mesh walls are written beside the particles and indexed in walls.xmf", "[io]") {
+  auto sim = twoSpheres();
+  const fs::path dir = workDir("walls") / "snapshots";
+  // Two surfaces: a tetrahedron and a single triangle, moved between the two snapshots.
+  io::WallSurface tetra{"cone", {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+                                 {{{0, 2, 1}}, {{0, 1, 3}}, {{0, 3, 2}}, {{1, 2, 3}}}}};
+  io::WallSurface tri{"vane", {{Vec3(2, 0, 0), Vec3(3, 0, 0), Vec3(2, 1, 0)}, {{{0, 1, 2}}}}};
+  io::SnapshotWriter writer(dir);
+  writer.write(*sim);  // no walls: no /walls group, no walls.xmf
+  CHECK_FALSE(fs::exists(dir / "walls.xmf"));
+  sim->step(2);
+  for (Vec3& v : tetra.mesh.vertices) v.z() += 0.5;
+  const fs::path file = writer.write(*sim, {tetra, tri});
+
+  const hid_t f = H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+  REQUIRE(f >= 0);
+  std::vector<hsize_t> dims;
+  const auto vertices = readDataset<double>(f, "/walls/vertices", H5T_NATIVE_DOUBLE, dims);
+  CHECK(dims == std::vector<hsize_t>{7, 3});
+  CHECK(vertices[3 * 3 + 2] == 1.5);  // the tetrahedron's apex, moved up
+  CHECK(vertices[3 * 6 + 0] == 2.0);  // the triangle's last vertex
+  const auto triangles = readDataset<std::int64_t>(f, "/walls/triangles", H5T_NATIVE_INT64, dims);
+  CHECK(dims == std::vector<hsize_t>{5, 3});
+  CHECK(std::vector<std::int64_t>(triangles.end() - 3, triangles.end()) == std::vector<std::int64_t>{4, 5, 6});
+  const auto wall = readDataset<std::int32_t>(f, "/walls/wall", H5T_NATIVE_INT32, dims);
+  CHECK(wall == std::vector<std::int32_t>{0, 0, 0, 0, 1});
+  const hid_t group = H5Gopen2(f, "/walls", H5P_DEFAULT);
+  const hid_t attr = H5Aopen(group, "names", H5P_DEFAULT);
+  REQUIRE(attr >= 0);
+  const hid_t type = H5Aget_type(attr);
+  std::string names(H5Tget_size(type), '\0');
+  CHECK(H5Aread(attr, type, names.data()) >= 0);
+  CHECK(names.c_str() == std::string("cone\nvane"));
+  H5Tclose(type);
+  H5Aclose(attr);
+  H5Gclose(group);
+  H5Fclose(f);
+
+  std::ifstream in(dir / "walls.xmf");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string xmf = text.str();
+  CHECK_THAT(xmf, Catch::Contains("CollectionType=\"Temporal\"") && Catch::Contains("TopologyType=\"Triangle\"") &&
+                      Catch::Contains("NumberOfElements=\"5\"") && Catch::Contains("snap_000001.h5:/walls/vertices"));
+  CHECK(xmf.find("snap_000000.h5") == std::string::npos);  // the first snapshot had no walls
+}

@@ -62,10 +62,15 @@ int readJson(lua_State* L) {
   nlohmann::json doc;
   try {
     doc = nlohmann::json::parse(text.str());
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // parse_error, and out_of_range for a number beyond a double (1e309): both the file's fault.
     throw InputError("paddy.read_json: '" + path + "' is not valid JSON: " + e.what());
   }
-  pushJson(L, doc);
+  try {
+    pushJson(L, doc);
+  } catch (const InputError& e) {
+    throw InputError("paddy.read_json: '" + path + "': " + e.what());
+  }
   return 1;
 }
 

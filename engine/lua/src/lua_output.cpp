@@ -8,7 +8,10 @@
 #include "runtime_state.hpp"
 #include "sim_handle.hpp"
 
+#include "wall_args.hpp"
+
 #include <paddy/errors.hpp>
+#include <paddy/geometry/mesh_wall.hpp>
 
 namespace paddy::lua {
 
@@ -17,7 +20,13 @@ namespace fs = std::filesystem;
 fs::path writeSnapshot(lua_State* L, SimHandle& h) {
   if (runtimeState(L).out_dir.empty()) throw InputError("no output directory: snapshots are disabled");
   if (!h.snapshots) h.snapshots = std::make_unique<io::SnapshotWriter>(h.snapshot_dir);
-  return h.snapshots->write(*h.sim);
+  // The mesh walls (cone, vane, cup...) where they are now, so a viewer shows them moving.
+  std::vector<io::WallSurface> walls;
+  for (int k : allMeshWalls(*h.sim)) {
+    const auto& w = dynamic_cast<const MeshWall&>(h.sim->wall(k));
+    walls.push_back({w.name(), w.worldMesh()});
+  }
+  return h.snapshots->write(*h.sim, walls);
 }
 
 namespace {

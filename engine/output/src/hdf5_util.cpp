@@ -31,4 +31,11 @@ void writeAttribute(hid_t object, const std::string& name, std::uint64_t value) 
   writeScalarAttribute(object, name, H5T_NATIVE_UINT64, &value);
 }
 
+void writeAttribute(hid_t object, const std::string& name, const std::string& value) {
+  Handle type(H5Tcopy(H5T_C_S1), H5Tclose, "create string type for attribute " + name);
+  // Null-terminated: the size counts the terminating '\0' that c_str() provides.
+  if (H5Tset_size(type, value.size() + 1) < 0) throw std::runtime_error("HDF5: cannot size string attribute " + name);
+  writeScalarAttribute(object, name, type, value.c_str());
+}
+
 }  // namespace paddy::io::h5

@@ -40,5 +40,6 @@ void writeDataset(hid_t parent, const std::string& name, hid_t type, std::size_t
                   const void* data);
 void writeAttribute(hid_t object, const std::string& name, double value);
 void writeAttribute(hid_t object, const std::string& name, std::uint64_t value);
+void writeAttribute(hid_t object, const std::string& name, const std::string& value);  // fixed-length
 
 }  // namespace paddy::io::h5

@@ -74,9 +74,33 @@ void writeContacts(hid_t file, const std::vector<ContactRecord>& c) {
                flatten3(c, [](const ContactRecord& r) -> const Vec3& { return r.ft; }).data());
 }
 
+void writeWalls(hid_t file, const std::vector<WallSurface>& walls) {
+  using namespace h5;
+  std::vector<double> vertices;
+  std::vector<std::int64_t> triangles;
+  std::vector<std::int32_t> wall;
+  std::string names;
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const TriangleMesh& m = walls[k].mesh;
+    const auto offset = static_cast<std::int64_t>(vertices.size() / 3);
+    for (const Vec3& v : m.vertices) vertices.insert(vertices.end(), {v.x(), v.y(), v.z()});
+    for (const auto& t : m.triangles) {
+      for (std::uint32_t i : t) triangles.push_back(offset + static_cast<std::int64_t>(i));
+      wall.push_back(static_cast<std::int32_t>(k));
+    }
+    names += (k ? "\n" : "") + walls[k].name;
+  }
+  Handle group(H5Gcreate2(file, "walls", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose,
+               "create group /walls");
+  writeAttribute(group, "names", names);
+  writeDataset(group, "vertices", H5T_NATIVE_DOUBLE, vertices.size() / 3, 3, vertices.data());
+  writeDataset(group, "triangles", H5T_NATIVE_INT64, wall.size(), 3, triangles.data());
+  writeDataset(group, "wall", H5T_NATIVE_INT32, wall.size(), 0, wall.data());
+}
+
 }  // namespace
 
-void writeSnapshot(const Simulation& sim, const fs::path& file) {
+void writeSnapshot(const Simulation& sim, const fs::path& file, const std::vector<WallSurface>& walls) {
   const std::vector<ContactRecord> contacts = sim.contacts();
   produceFileAtomic(file, [&](const fs::path& tmp) {
     using namespace h5;
@@ -87,6 +111,7 @@ void writeSnapshot(const Simulation& sim, const fs::path& file) {
       writeAttribute(f, "step", static_cast<std::uint64_t>(sim.stepCount()));
       writeParticles(f, sim.particles());
       writeContacts(f, contacts);
+      if (!walls.empty()) writeWalls(f, walls);
       f.close("write file " + tmp.string());
     } catch (const std::runtime_error& e) {
       throw std::runtime_error(std::string(e.what()) + " (snapshot " + file.string() + ")");
@@ -94,7 +119,7 @@ void writeSnapshot(const Simulation& sim, const fs::path& file) {
   });
 }
 
-fs::path SnapshotWriter::write(const Simulation& sim) {
+fs::path SnapshotWriter::write(const Simulation& sim, const std::vector<WallSurface>& walls) {
   if (entries_.empty()) {
     // Stale files from an earlier run in the same directory would confuse readers.
     std::error_code ec;
@@ -103,7 +128,7 @@ fs::path SnapshotWriter::write(const Simulation& sim) {
         const std::string name = entry.path().filename().string();
         // (also the temporaries of a run killed while writing: snap_NNNNNN.h5.tmp.PID)
         if ((name.rfind("snap_", 0) == 0 && (entry.path().extension() == ".h5" || name.find(".h5.tmp.") != std::string::npos)) ||
-            name == "particles.xmf")
+            name == "particles.xmf" || name == "walls.xmf")
           fs::remove(entry.path(), ec);
       }
     }
@@ -111,9 +136,16 @@ fs::path SnapshotWriter::write(const Simulation& sim) {
   char name[32];
   std::snprintf(name, sizeof name, "snap_%06zu.h5", entries_.size());
   const fs::path file = dir_ / name;
-  writeSnapshot(sim, file);
-  entries_.push_back({name, sim.time(), sim.particles().size()});
+  writeSnapshot(sim, file, walls);
+  SnapshotEntry entry{name, sim.time(), sim.particles().size()};
+  for (const WallSurface& w : walls) {
+    entry.wall_vertices += w.mesh.vertices.size();
+    entry.wall_triangles += w.mesh.triangles.size();
+  }
+  entries_.push_back(std::move(entry));
   writeFileAtomic(dir_ / "particles.xmf", xdmfText(entries_));
+  const std::string walls_xmf = wallsXdmfText(entries_);
+  if (!walls_xmf.empty()) writeFileAtomic(dir_ / "walls.xmf", walls_xmf);
   return file;
 }
 

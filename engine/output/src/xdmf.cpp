@@ -64,4 +64,43 @@ std::string xdmfText(const std::vector<SnapshotEntry>& entries) {
   return out.str();
 }
 
+std::string wallsXdmfText(const std::vector<SnapshotEntry>& entries) {
+  std::ostringstream out;
+  out << std::setprecision(17);
+  bool any = false;
+  for (const SnapshotEntry& e : entries) {
+    if (e.wall_triangles == 0) continue;
+    if (!any) {
+      out << "<?xml version=\"1.0\" ?>\n"
+             "<!DOCTYPE Xdmf SYSTEM \"Xdmf.dtd\" []>\n"
+             "<Xdmf Version=\"3.0\">\n"
+             "  <Domain>\n"
+             "    <Grid Name=\"walls\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+      any = true;
+    }
+    // One grid per snapshot: the triangles of every finite wall, with the cell attribute `wall`
+    // (the wall's index in the file's /walls names).
+    out << "      <Grid Name=\"" << e.file << "\" GridType=\"Uniform\">\n"
+        << "        <Time Value=\"" << e.time << "\"/>\n"
+        << "        <Topology TopologyType=\"Triangle\" NumberOfElements=\"" << e.wall_triangles << "\">\n"
+        << "          <DataItem Dimensions=\"" << e.wall_triangles
+        << " 3\" NumberType=\"Int\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/walls/triangles</DataItem>\n"
+        << "        </Topology>\n"
+        << "        <Geometry GeometryType=\"XYZ\">\n"
+        << "          <DataItem Dimensions=\"" << e.wall_vertices
+        << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/walls/vertices</DataItem>\n"
+        << "        </Geometry>\n"
+        << "        <Attribute Name=\"wall\" AttributeType=\"Scalar\" Center=\"Cell\">\n"
+        << "          <DataItem Dimensions=\"" << e.wall_triangles
+        << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << e.file << ":/walls/wall</DataItem>\n"
+        << "        </Attribute>\n"
+        << "      </Grid>\n";
+  }
+  if (!any) return {};
+  out << "    </Grid>\n"
+         "  </Domain>\n"
+         "</Xdmf>\n";
+  return out.str();
+}
+
 }  // namespace paddy::io

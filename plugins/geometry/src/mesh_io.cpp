@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace paddy::geometry {
 namespace fs = std::filesystem;
@@ -112,6 +113,86 @@ void scanNonFinite(const std::string& path, const std::string& ext, const std::s
   }
 }
 
+// ASCII OFF facets, read the way CGAL reads them (File_header_OFF, File_scanner_OFF): the
+// keyword and the counts "V F E" are tokens (blanks and '#' comments between them skipped), then
+// each vertex and each facet is the rest of a line starting at the next character that is neither
+// blank nor in a comment. CGAL converts a facet's corner count and its vertex indices from double
+// to std::size_t, which is undefined behaviour for a negative, huge or non-finite value: such a
+// facet is refused here, naming it (a fractional index is refused too: it names no vertex).
+void checkOffFacets(const std::string& path, const std::string& bytes) {
+  const std::size_t n = bytes.size();
+  std::size_t pos = 0;
+  const auto skip = [&] {
+    while (pos < n) {
+      if (std::isspace(static_cast<unsigned char>(bytes[pos]))) {
+        ++pos;
+      } else if (bytes[pos] == '#') {
+        pos = bytes.find('\n', pos);
+        if (pos == std::string::npos) pos = n;
+      } else {
+        break;
+      }
+    }
+  };
+  // The keyword, as CGAL reads it: its first character, then letters and digits; the character
+  // that ends it is consumed.
+  skip();
+  if (pos >= n) return;
+  std::string magic(1, bytes[pos++]);
+  while (magic.size() < 41 && pos < n) {
+    const char c = bytes[pos++];
+    if (!std::isalnum(static_cast<unsigned char>(c))) break;
+    magic += c;
+  }
+  std::size_t j = 0;
+  if (magic.compare(0, 2, "ST") == 0) j += 2;
+  if (j < magic.size() && magic[j] == 'C') ++j;
+  if (j < magic.size() && magic[j] == 'N') ++j;
+  // nOFF and 4OFF carry other entries, SKEL is not a surface; a binary OFF is left to CGAL too
+  // (its indices are int32, no conversion from double).
+  if (magic.compare(j, std::string::npos, "OFF") != 0) return;
+  // CGAL 5.5 reads a vertex's texture coordinates without checking the line holds them (a read
+  // past the end of its entries, found by fuzzing); a wall needs no texture.
+  if (magic.compare(0, 2, "ST") == 0)
+    throw InputError(path + ": textured OFF ('" + magic + "') is not supported: write it as plain OFF");
+  skip();
+  if (pos >= n || !std::isdigit(static_cast<unsigned char>(bytes[pos]))) return;  // BINARY, or refused
+  long counts[3];
+  for (long& c : counts) {  // `in >> int`: blanks, then an optional sign and digits
+    while (pos < n && std::isspace(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    const std::size_t start = pos;
+    if (pos < n && (bytes[pos] == '+' || bytes[pos] == '-')) ++pos;
+    while (pos < n && std::isdigit(static_cast<unsigned char>(bytes[pos]))) ++pos;
+    const std::string t = bytes.substr(start, pos - start);
+    char* end = nullptr;
+    c = std::strtol(t.c_str(), &end, 10);
+    if (t.empty() || *end != '\0' || c < 0 || c > 100000000) return;  // CGAL refuses the header
+  }
+  const auto record = [&] {
+    skip();
+    std::size_t end = bytes.find('\n', pos);
+    if (end == std::string::npos) end = n;
+    std::string line = bytes.substr(pos, end - pos);
+    pos = end < n ? end + 1 : n;
+    return line.substr(0, line.find('#'));
+  };
+  for (long v = 0; v < counts[0] && pos < n; ++v) record();
+  const auto index = [](double d) { return std::isfinite(d) && d >= 0 && d < 9.0e15 && d == std::floor(d); };
+  for (long f = 0; f < counts[1] && pos < n; ++f) {
+    const std::string line = record();
+    std::istringstream in(line);
+    std::vector<double> e;
+    for (double d; in >> d;) e.push_back(d);
+    if (e.empty()) return;  // CGAL refuses it
+    const std::string where = path + ": facet " + std::to_string(f) + " ('" + line + "')";
+    if (!index(e[0])) throw InputError(where + ": the corner count is not a whole number >= 0");
+    const double k = e[0];
+    for (std::size_t j = 1; j <= e.size() - 1 && static_cast<double>(j) <= k; ++j)
+      if (!index(e[j]))
+        throw InputError(where + ": corner " + std::to_string(j - 1) + " is not a vertex index (a whole number >= 0)");
+  }
+}
+
 std::string formatName(const std::string& ext) {
   if (ext == ".stl") return "STL";
   if (ext == ".off") return "OFF";
@@ -140,6 +221,7 @@ TriangleMesh readMesh(const std::string& path, const ImportOptions& o) {
   }
   if (bytes.find_first_not_of(" \t\r\n") == std::string::npos) throw InputError(path + ": empty file");
   scanNonFinite(path, ext, bytes);
+  if (ext == ".off") checkOffFacets(path, bytes);
 
   PolygonSoup soup;
   if (!cgal::readPolygonSoup(path, soup))
