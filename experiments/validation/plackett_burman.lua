@@ -176,14 +176,9 @@ report.write_json("pb_validation.json", doc)
 -- slump_jobs.edem_vs_paddy_chart).
 local pictures = {}
 if P.pictures and #done > 0 then
-  local lines = {}
-  for _, e in ipairs(done) do
-    lines[#lines + 1] = {e.run, e.edem.slump_mm, e.paddy.slump_mm, e.edem.slump_flow_mm, e.paddy.slump_flow_mm}
-  end
-  util.write_columns("pb_runs.dat", "run edem_slump paddy_slump edem_flow paddy_flow", lines)
-  pictures.runs = slump_jobs.edem_vs_paddy_chart("pb_runs",
+  pictures.runs = slump_jobs.runs_chart("pb_runs", done, "run",
     string.format("Plackett-Burman runs (Table 4): EDEM (reference, 2 mm) vs Paddy (%.0f mm spheres)", P.particle_diameter * 1000),
-    util.out("pb_runs.dat"), "top right", "run (13 = centre point)", "[0:*]")
+    "run (13 = centre point)")
   if fit_edem and fit_paddy then
     local eff = {}
     for k, term in ipairs{"H1", "H2", "H3", "H4", "H5", "H6", "H7", "Curvature"} do

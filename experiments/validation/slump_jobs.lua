@@ -247,4 +247,16 @@ plot '%s' using 4:xtic(1) title 'EDEM' lc rgb '#4477aa', '' using 5 title 'Paddy
 unset multiplot]], util.out(stem .. ".png"), title, key, yrange, dat, xlabel, dat))
 end
 
+-- The per-run chart of a study: EDEM vs Paddy for every finished entry, labelled on the x axis by
+-- its field label_key ("run", "step"); the data in <stem>.dat, the picture in <stem>.png
+-- (edem_vs_paddy_chart).
+function M.runs_chart(stem, done, label_key, title, xlabel)
+  local lines = {}
+  for _, e in ipairs(done) do
+    lines[#lines + 1] = {e[label_key], e.edem.slump_mm, e.paddy.slump_mm, e.edem.slump_flow_mm, e.paddy.slump_flow_mm}
+  end
+  util.write_columns(stem .. ".dat", label_key .. " edem_slump paddy_slump edem_flow paddy_flow", lines)
+  return M.edem_vs_paddy_chart(stem, title, util.out(stem .. ".dat"), "top right", xlabel, "[0:*]")
+end
+
 return M

@@ -199,14 +199,9 @@ report.write_json("sa_validation.json", doc)
 
 local pictures = {}
 if P.pictures and #done > 0 then
-  local lines = {}
-  for _, e in ipairs(done) do
-    lines[#lines + 1] = {e.step, e.edem.slump_mm, e.paddy.slump_mm, e.edem.slump_flow_mm, e.paddy.slump_flow_mm}
-  end
-  util.write_columns("sa_runs.dat", "step edem_slump paddy_slump edem_flow paddy_flow", lines)
-  pictures.runs = slump_jobs.edem_vs_paddy_chart("sa_runs",
+  pictures.runs = slump_jobs.runs_chart("sa_runs", done, "step",
     string.format("Steepest ascent (Table 6): EDEM (reference, 2 mm) vs Paddy (%.0f mm spheres)", P.particle_diameter * 1000),
-    util.out("sa_runs.dat"), "top right", "step (A, B, C rising)", "[0:*]")
+    "step (A, B, C rising)")
 end
 
 -- Summary on stdout.

@@ -88,6 +88,24 @@ def differing_pixels(a, b):
     return int((abs(pa - pb).max(axis=1) > 8).sum()) if pa.shape == pb.shape else pa.shape[0]
 
 
+def shown_pixels(reader, t, work, stem):
+    """ParaView's default view of reader at time t: Show + Render, nothing changed. Returns the
+    representation and how many pixels differ from the same view with the reader hidden (what
+    shows of it); both screenshots are kept in work as <stem>.png and <stem>_hidden.png."""
+    view = GetActiveViewOrCreate("RenderView")
+    view.ViewTime = t
+    rep = Show(reader, view)
+    ResetCamera(view)
+    Render(view)
+    shown = os.path.join(work, stem + ".png")
+    SaveScreenshot(shown, view, ImageResolution=[800, 600])
+    Hide(reader, view)
+    Render(view)
+    empty = os.path.join(work, stem + "_hidden.png")
+    SaveScreenshot(empty, view, ImageResolution=[800, 600])
+    return rep, differing_pixels(shown, empty)
+
+
 def not_blank(png, min_fraction=0.01):
     rgb, w, h = pixels(png)
     bg = tuple(int(v) for v in rgb[0])
@@ -129,18 +147,7 @@ def check_walls(xmf, work, min_triangles):
         print("%s: bounds x %.4g..%.4g y %.4g..%.4g z %.4g..%.4g" % ((where,) + tuple(bounds)))
         lowest.append(bounds[4])
     check(lowest[1] >= lowest[0], "the walls' lowest point went from z = %.6g to %.6g m (not down)" % tuple(lowest))
-    view = GetActiveViewOrCreate("RenderView")
-    view.ViewTime = series[-1][0]
-    Show(reader, view)
-    ResetCamera(view)
-    Render(view)
-    shown = os.path.join(work, "paraview_walls_view.png")
-    SaveScreenshot(shown, view, ImageResolution=[800, 600])
-    Hide(reader, view)
-    Render(view)
-    empty = os.path.join(work, "paraview_walls_view_hidden.png")
-    SaveScreenshot(empty, view, ImageResolution=[800, 600])
-    differ = differing_pixels(shown, empty)
+    _, differ = shown_pixels(reader, series[-1][0], work, "paraview_walls_view")
     check(differ >= 1000, "default view of the walls: %d pixels show them" % differ)
     print("%d failures" % len(failures))
     return 1 if failures else 0
@@ -175,18 +182,7 @@ def main(argv):
     # ParaView's default view of the last snapshot: Show + Render, nothing changed. The particles
     # are visible when the picture differs from the same view with the reader hidden (without
     # cells the two are identical) in at least as many pixels as half the particle count.
-    view = GetActiveViewOrCreate("RenderView")
-    view.ViewTime = series[-1][0]
-    rep = Show(reader, view)
-    ResetCamera(view)
-    Render(view)
-    shown = os.path.join(work, "paraview_default_view.png")
-    SaveScreenshot(shown, view, ImageResolution=[800, 600])
-    Hide(reader, view)
-    Render(view)
-    empty = os.path.join(work, "paraview_default_view_hidden.png")
-    SaveScreenshot(empty, view, ImageResolution=[800, 600])
-    differ = differing_pixels(shown, empty)
+    rep, differ = shown_pixels(reader, series[-1][0], work, "paraview_default_view")
     check(differ >= series[-1][2] / 2, "default view (%s representation): %d pixels show particles (%d particles)"
           % (rep.Representation, differ, series[-1][2]))
     print("%d failures" % len(failures))
