@@ -28,6 +28,7 @@ local P = paddy.parameters{
   {name = "candidate_set", default = "effects", choices = {"stand_in", "effects"},
    description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
   {name = "lift_speeds", default = "", description = "lift speeds of the slump experiments, comma-separated m/s ('' = the variant's: full 0.1,0.4; tiny and small 0.3)"},
+  {name = "cone_scales", default = "", description = "sizes of the slump cone as factors of the standard one (100/200/300 mm), comma-separated: one slump experiment per size and lift speed ('' = the standard cone only); a larger cone loads the mud more, which load-dependent effects feel and surface forces do not"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
@@ -95,6 +96,27 @@ if P.lift_speeds ~= "" then
     if v <= 0 or v > 2 then error(string.format("discovery_blind.lua: lift_speeds = %s: each speed must be in (0, 2] m/s", P.lift_speeds), 0) end
     experiments[#experiments + 1] = {name = string.format("slump_%dmm_per_s", math.floor(v * 1000 + 0.5)), script = "slump.lua", set = {lift_speed = v}}  -- a plain name: no dot
   end
+end
+-- cone_scales: each experiment at each cone size (a scale other than 1 appends _cone<percent> to
+-- its name and scales the cone's three dimensions).
+if P.cone_scales ~= "" then
+  local scales, sized = util.numbers(P.cone_scales, "cone_scales"), {}
+  for _, sc in ipairs(scales) do
+    if sc < 0.5 or sc > 2 then error(string.format("discovery_blind.lua: cone_scales = %s: each scale must be in [0.5, 2]", P.cone_scales), 0) end
+  end
+  for _, e in ipairs(experiments) do
+    for _, sc in ipairs(scales) do
+      local set = {}
+      for k, v in pairs(e.set) do set[k] = v end
+      local name = e.name
+      if sc ~= 1 then
+        name = string.format("%s_cone%d", e.name, math.floor(sc * 100 + 0.5))
+        set.cone_height, set.cone_top_diameter, set.cone_bottom_diameter = 0.3 * sc, 0.1 * sc, 0.2 * sc
+      end
+      sized[#sized + 1] = {name = name, script = e.script, set = set}
+    end
+  end
+  experiments = sized
 end
 for _, e in ipairs(experiments) do for k, v in pairs(common) do e.set[k] = v end end
 

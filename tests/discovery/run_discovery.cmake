@@ -55,6 +55,11 @@ elseif(CASE STREQUAL "input_errors")
   if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "lift_speeds = 0.1,3: each speed must be in \\(0, 2\\] m/s")
     message(FATAL_ERROR "lift speed out of range: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out blind --threads 1
+            --set small=true --set cone_scales=1,2.5)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "cone_scales = 1,2.5: each scale must be in \\[0.5, 2\\]")
+    message(FATAL_ERROR "cone scale out of range: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
 
 elseif(CASE STREQUAL "slump_observables")
   # ~400 spheres of 25 mm, a fast lift. A broken sampler fails: wrong lengths (grids must not depend
