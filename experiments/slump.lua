@@ -47,6 +47,8 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "overfill", default = 0.35, min = 0, max = 0.5, description = "packing=lattice: fill this fraction of the height above the rim, struck off after settling"},
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "set by contact_conventions / material unless given (paddy 0.1, edem 0.2; paddy_calibrated: 0.0804 as calibrated); time step / Rayleigh time at the reference damping (converged at 0.1; 0.2 is stable but not converged with this JKR mud, 0.3 unstable); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "set by contact_conventions / material unless given; shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
+  {name = "lift_rolling_integration", default = "same", choices = {"same", "implicit", "explicit"},
+   description = "integration of the type A rolling torque from the strike-off on (same: as during the fill; implicit or explicit: switch the contact laws before the lift): separates the torque's effect on the fill from its effect on the collapse"},
   {name = "settle_max_time", default = 2.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone (a poured fill needs at least its fall time plus min_rest_time)"},
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
   {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
@@ -166,6 +168,11 @@ if cone then
     pour.check_full("slump", struck, H)
     pour.remove_hopper(sim, poured)
   end
+end
+if P.lift_rolling_integration ~= "same" then
+  P.rolling_integration = P.lift_rolling_integration
+  mud.set_interactions(sim, P, cg.params, m_mud, m_steel)
+  P.material_info.lift_rolling = mud.rolling_model(P, mud.conventions[P.contact_conventions])
 end
 local particles = sim:count()
 -- The fill as the lift starts: solid fraction in the cone (the bulk density of the simulated mud is

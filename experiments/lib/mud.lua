@@ -83,6 +83,8 @@ end
 M.selection = {
   {name = "contact_conventions", default = M.default_conventions, choices = M.convention_names,
    description = "contact conventions: paddy (Paddy's converged physics) or edem (EDEM as documented: explicit type A rolling torque, JKR stiffness from the overlap, 0.2 T_R); docs/physics.md \"EDEM conventions\""},
+  {name = "rolling_integration", default = "conventions", choices = {"conventions", "implicit", "explicit"},
+   description = "integration of the type A rolling torque: conventions (paddy implicit, edem explicit), implicit (constant_torque: a rotation stops instead of reversing) or explicit (constant_torque_explicit: the torque from the step's angular velocity); docs/physics.md §2.5, §6"},
   {name = "material", default = "auto", choices = M.material_names,
    description = "named contact-parameter set (experiments/materials/paddy_mud.json); auto: paddy_calibrated under paddy conventions, reference_edem under edem"},
 }
@@ -215,17 +217,31 @@ end
 -- slip"). The rolling sub-model and the JKR stiffness option follow P.contact_conventions
 -- (M.conventions). Then every effect that is on (M.effects, plus `effects` passed in) joins its
 -- pairs: its extra is appended, its normal model replaces the pair's, its parameters are added.
+M.rolling_models = {implicit = "constant_torque", explicit = "constant_torque_explicit"}
+
+-- The type A rolling sub-model: the conventions' one unless rolling_integration overrides it.
+function M.rolling_model(P, conv)
+  local how = rawget(P, "rolling_integration")
+  if how == nil or how == "conventions" then return conv.rolling end
+  local model = M.rolling_models[how]
+  if not model then
+    error(string.format("rolling_integration = '%s': choose conventions, implicit or explicit", tostring(how)), 0)
+  end
+  return model
+end
+
 function M.pair_specs(P, c, effects)
   local conv = M.conventions[P.contact_conventions or M.default_conventions]
+  local rolling = M.rolling_model(P, conv)
   local specs = {
     mud_mud = {
-      normal = "jkr", damping = "hertz_mindlin", tangential = "mindlin", rolling = conv.rolling,
+      normal = "jkr", damping = "hertz_mindlin", tangential = "mindlin", rolling = rolling,
       restitution = c.mud_mud_restitution, friction = c.mud_mud_friction,
       rolling_friction = c.mud_mud_rolling_friction, surface_energy = c.jkr_surface_energy,
       jkr_overlap_stiffness = conv.jkr_overlap_stiffness,
     },
     mud_steel = {
-      normal = "hertz", damping = "hertz_mindlin", tangential = "mindlin", rolling = conv.rolling,
+      normal = "hertz", damping = "hertz_mindlin", tangential = "mindlin", rolling = rolling,
       restitution = c.mud_steel_restitution, friction = c.mud_steel_friction,
       rolling_friction = c.mud_steel_rolling_friction,
     },
@@ -253,10 +269,15 @@ function M.setup(sim, P, c, effects)
                            poisson = P.mud_poisson}
   local steel = sim:material{name = "steel", density = P.steel_density, shear_modulus = P.steel_shear_modulus,
                              poisson = P.steel_poisson}
+  M.set_interactions(sim, P, c, mud, steel, effects)
+  return mud, steel
+end
+
+-- Sets (or replaces, during a run) the two pairs' contact laws.
+function M.set_interactions(sim, P, c, mud, steel, effects)
   local specs = M.pair_specs(P, c, effects)
   sim:interaction(mud, mud, specs.mud_mud)
   sim:interaction(mud, steel, specs.mud_steel)
-  return mud, steel
 end
 
 -- Time step for the contact parameters c. timestep_fraction (of the Rayleigh time) is the step
@@ -311,6 +332,7 @@ function M.resolve(P, given)
                         table.concat(M.material_names, ", ")), 0)
   end
   local info = {name = name, conventions = conv_name, conventions_description = conv.description,
+                rolling = M.rolling_model(V, conv),
                 source = set.source, calibrated_with = set.calibrated_with, file = M.materials_file, given = {}}
   for _, e in ipairs(M.contact) do
     if given[e.name] ~= nil then
@@ -341,8 +363,11 @@ end
 function M.describe(P)
   local i = P.material_info
   local v = i.values
-  return string.format("conventions %s; material %s (%s): e %.3g/%.3g, mu %.3g/%.3g, mu_r %.3g/%.3g (mud-mud/mud-steel), gamma %.3g J/m^2 at 2 mm%s\n            step %.3g T_R%s from %s",
-    i.conventions, i.name, (i.source:match("^[^(,;]+"):gsub("%s+$", "")), v.mud_mud_restitution, v.mud_steel_restitution,
+  local conv = M.conventions[i.conventions]
+  local rolling = i.rolling ~= conv.rolling and string.format(" (rolling %s)", i.rolling) or ""
+  if i.lift_rolling and i.lift_rolling ~= i.rolling then rolling = rolling .. string.format(" (from the lift on: rolling %s)", i.lift_rolling) end
+  return string.format("conventions %s%s; material %s (%s): e %.3g/%.3g, mu %.3g/%.3g, mu_r %.3g/%.3g (mud-mud/mud-steel), gamma %.3g J/m^2 at 2 mm%s\n            step %.3g T_R%s from %s",
+    i.conventions, rolling, i.name, (i.source:match("^[^(,;]+"):gsub("%s+$", "")), v.mud_mud_restitution, v.mud_steel_restitution,
     v.mud_mud_friction, v.mud_steel_friction, v.mud_mud_rolling_friction, v.mud_steel_rolling_friction,
     v.jkr_surface_energy, #i.given > 0 and ("; given with --set: " .. table.concat(i.given, ", ")) or "",
     P.timestep_fraction, P.timestep_damping and " (shortened below e = 0.13)" or "", i.timestep_from)

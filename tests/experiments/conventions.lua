@@ -86,6 +86,32 @@ check(e["mud-mud"].rolling == "constant_torque_explicit" and e["mud-steel"].roll
 check(e["mud-mud"].jkr_overlap_stiffness == 1, "edem JKR stiffness from the overlap")
 check(e["mud-mud"].surface_energy == reference.jkr_surface_energy, "edem gamma %g", e["mud-mud"].surface_energy)
 
+-- rolling_integration overrides the conventions' rolling sub-model on both pairs and nothing else;
+-- set_interactions replaces the laws with the new choice (slump.lua's lift_rolling_integration).
+local function laws_with(conventions, integration)
+  local rec = {}
+  local sim = {material = function(_, m) return m.name end,
+               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end}
+  local P = mud.resolve(declared{contact_conventions = conventions, rolling_integration = integration}, {})
+  mud.setup(sim, P, P)
+  return rec, P, sim
+end
+local ei, Pi, sim_i = laws_with("edem", "implicit")
+check(ei["mud-mud"].rolling == "constant_torque" and ei["mud-steel"].rolling == "constant_torque", "edem + implicit rolling")
+check(ei["mud-mud"].jkr_overlap_stiffness == 1 and Pi.timestep_fraction == 0.2, "edem + implicit keeps the other edem choices")
+check(Pi.material_info.rolling == "constant_torque" and mud.describe(Pi):find("(rolling constant_torque)", 1, true),
+      "the override is recorded and printed: %s", mud.describe(Pi))
+local pe = laws_with("paddy", "explicit")
+check(pe["mud-mud"].rolling == "constant_torque_explicit" and pe["mud-steel"].rolling == "constant_torque_explicit", "paddy + explicit rolling")
+check(pe["mud-mud"].jkr_overlap_stiffness == 0, "paddy + explicit keeps the paddy JKR stiffness")
+local pc = laws_with("paddy", "conventions")
+check(pc["mud-mud"].rolling == "constant_torque" and not mud.describe(mud.resolve(declared(), {})):find("(rolling", 1, true), "conventions: no override")
+Pi.rolling_integration = "explicit"
+mud.set_interactions(sim_i, Pi, Pi, "mud", "steel")
+check(ei["mud-mud"].rolling == "constant_torque_explicit" and ei["mud-steel"].rolling == "constant_torque_explicit", "switched during the run")
+ok, msg = pcall(mud.pair_specs, {contact_conventions = "paddy", rolling_integration = "halfway"}, Pi)
+check(not ok and msg:find("rolling_integration = 'halfway'", 1, true), "bad rolling_integration: %s", tostring(msg))
+
 -- The calibration input's conventions key: default paddy, edem accepted, anything else refused.
 local t = paddy.read_json((mud.materials_file:gsub("materials/paddy_mud%.json$", "calibration/paddy_mud.json")))
 check(input_file.read(paddy.write_json("cal_default.json", t)).conventions == "paddy", "input default")
