@@ -417,6 +417,8 @@ paddy.result{
   comparison = comparison,
   vane = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2,
           bottom = z_vane, torque_factor_m3 = measure.vane_torque_factor(vane_geometry)},
+  fill_level = P.fill_level, cup_height = P.cup_height,
+  mud_density = P.mud_density,        -- particle density; × fill_solid_fraction = bulk density of the fill
   particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed, packing = P.packing,
   fill_solid_fraction = fill_solid,   -- sphere volume / cup volume below fill_level, before the vane goes in
   hopper_height_m = poured and poured.hopper_height or nil,

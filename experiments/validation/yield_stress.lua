@@ -13,7 +13,17 @@
 -- the seed number), then mean ± std (n − 1) over the seeds of τ_vane, τ_slump and the ratio, and
 -- whether the mean ratio is within `target` (25 %) of 1. Outputs in --out: ys_runs.csv,
 -- ys_summary.csv, yield_stress_study.json, ys_ratio.png, result.json.
+--
+-- Vane depth series (vane_fill_levels, e.g. 0.102,0.12,0.15): the start-up test at each fill level
+-- (the same blades, so a different overburden above them; the cup at least as high as the fill).
+-- Per set the Mohr–Coulomb line τ_peak = c + σ_v tanφ by least squares (lib/rheology.lua) against
+-- the mean vertical stress at the blades' mid-height σ_v = ρ_p φ g z (φ the run's measured fill
+-- solid fraction, z the depth of the mid-height below the fill level): per seed, then mean ± std of
+-- c, tanφ and c / τ_slump over the seeds, and pooled over the seeds with the standard errors of c
+-- and tanφ. Also the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the
+-- vane at reference_fill_level. Extra outputs: ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
 local util = require("lib.util")
+local rheology = require("lib.rheology")
 local report = require("report")
 
 local P = paddy.parameters{
@@ -25,6 +35,8 @@ local P = paddy.parameters{
   {name = "rheometer_diameter", default = 0.012, unit = "m", min = 0.001, max = 0.02, description = "sphere diameter of the rheometer runs"},
   {name = "slump_set", default = "", description = "extra slump.lua parameters for every run, e.g. 'max_time=4'"},
   {name = "rheometer_set", default = "", description = "extra rheometer.lua parameters for every run, e.g. 'startup_rpm=1'"},
+  {name = "vane_fill_levels", default = "", description = "vane depth series: fill levels [m] of the rheometer runs (comma-separated, at least 2; empty: one run at rheometer.lua's fill level)"},
+  {name = "reference_fill_level", default = 0.12, unit = "m", min = 0.01, max = 1, description = "with vane_fill_levels: the level whose vane fills ys_runs.csv's vane columns (rheometer.lua's default fill)"},
   {name = "target", default = 0.25, min = 0, max = 10, description = "agreement target: |mean ratio − 1| within this"},
   {name = "max_parallel", default = 1, type = "integer", min = 1, max = 256, description = "runs at once"},
   {name = "threads_per_job", default = 1, type = "integer", min = 1, max = 256, description = "threads of each run"},
@@ -65,6 +77,17 @@ for _, extra in ipairs({slump_extra, rheo_extra}) do
     error("slump_set / rheometer_set must not set " .. P.parameter .. ", seed or particle_diameter")
   end
 end
+-- The depth series: fill levels of the vane runs (false: one run at rheometer.lua's fill level, the
+-- job parameters and keys as before the series existed).
+local fill_levels = report.numbers(P.vane_fill_levels, "vane_fill_levels") or false
+local RHEOMETER_CUP_HEIGHT = 0.12  -- rheometer.lua's default cup_height
+if fill_levels then
+  if #fill_levels < 2 then error("vane_fill_levels: a depth series needs at least 2 fill levels, got " .. P.vane_fill_levels) end
+  if rheo_extra.fill_level then error("rheometer_set must not set fill_level when vane_fill_levels is given") end
+  for k = 2, #fill_levels do
+    if not (fill_levels[k] > fill_levels[k - 1]) then error("vane_fill_levels = " .. P.vane_fill_levels .. ": must increase strictly") end
+  end
+end
 
 local c = paddy.campaign{dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign",
                          max_parallel = P.max_parallel, threads_per_job = P.threads_per_job, max_attempts = P.max_attempts,
@@ -76,26 +99,46 @@ for li, l in ipairs(levels) do
                              [P.parameter] = l.value}, slump_extra)
     local rp = report.merge({particle_diameter = P.rheometer_diameter, progress = false, pictures = false, snapshot_interval = 0,
                              [P.parameter] = l.value}, rheo_extra)
-    jobs[#jobs + 1] = {level = li, seed = s, test = "vane", key = c:submit{script = dir .. "/../rheometer.lua", params = rp, seed = s}}
+    if fill_levels then
+      for fi, f in ipairs(fill_levels) do
+        local cup = math.max(tonumber(rheo_extra.cup_height) or RHEOMETER_CUP_HEIGHT, f)
+        local rpf = report.merge(rp, {fill_level = f, cup_height = cup})
+        jobs[#jobs + 1] = {level = li, seed = s, test = "vane", fill = fi,
+                           key = c:submit{script = dir .. "/../rheometer.lua", params = rpf, seed = s}}
+      end
+    else
+      jobs[#jobs + 1] = {level = li, seed = s, test = "vane", key = c:submit{script = dir .. "/../rheometer.lua", params = rp, seed = s}}
+    end
     jobs[#jobs + 1] = {level = li, seed = s, test = "slump", key = c:submit{script = dir .. "/../slump.lua", params = sp, seed = s}}
   end
 end
-io.stderr:write(string.format("yield_stress: %d sets x %d seeds x 2 tests = %d runs\n", #levels, #seeds, #jobs))
+io.stderr:write(string.format("yield_stress: %d sets x %d seeds x (1 slump + %d vane) = %d runs\n", #levels, #seeds,
+                              fill_levels and #fill_levels or 1, #jobs))
 local results = c:run()
 
 -- Collect per set and seed.
-local by = {}  -- by[level][seed] = {slump = result, vane = result}
+local by = {}  -- by[level][seed] = {slump = result, vane = result, depth = {[fill index] = result}}
 local failed = 0
+local reference_fill
+if fill_levels then
+  for fi, f in ipairs(fill_levels) do if math.abs(f - P.reference_fill_level) < 1e-9 then reference_fill = fi end end
+end
 for i, run in ipairs(results) do
   local j = jobs[i]
   by[j.level] = by[j.level] or {}
-  by[j.level][j.seed] = by[j.level][j.seed] or {}
+  by[j.level][j.seed] = by[j.level][j.seed] or {depth = {}}
   if run.status == "done" then
-    by[j.level][j.seed][j.test] = {result = run.result, wall = run.metadata and run.metadata.wall_time}
+    local e = {result = run.result, wall = run.metadata and run.metadata.wall_time}
+    if j.fill then
+      by[j.level][j.seed].depth[j.fill] = e
+      if j.fill == reference_fill then by[j.level][j.seed].vane = e end
+    else
+      by[j.level][j.seed][j.test] = e
+    end
   else
     failed = failed + 1
-    io.stderr:write(string.format("yield_stress: %s, seed %d, %s failed: %s\n", levels[j.level].label, j.seed, j.test,
-                                  tostring(run.error)))
+    io.stderr:write(string.format("yield_stress: %s, seed %d, %s%s failed: %s\n", levels[j.level].label, j.seed, j.test,
+                                  j.fill and string.format(" at fill level %g m", fill_levels[j.fill]) or "", tostring(run.error)))
   end
 end
 
@@ -148,8 +191,103 @@ end
 util.write_csv("ys_runs.csv", run_cols, run_rows)
 util.write_csv("ys_summary.csv", {"set", "value", "seeds", "vane_Pa", "vane_std_Pa", "slump_Pa", "slump_std_Pa", "ratio", "ratio_std",
                                   "within_target"}, sum_rows)
+
+-- The depth series: per set the Mohr–Coulomb line of the vane's peak stress against the overburden
+-- at the blades' mid-height, per seed and pooled; c / τ_slump; the shallowest level against the slump.
+local depth_runs, depth = {}, nil
+if fill_levels then
+  depth = {fill_levels = fill_levels, reference_fill_level = reference_fill and P.reference_fill_level or nil, sets = {}}
+  local drows, frows = {}, {}
+  local function fit_or_error(sig, tau)
+    local ok, f = pcall(rheology.mohr_coulomb_fit, {sigma = sig, tau = tau})
+    if ok then return f end
+    return nil, tostring(f)
+  end
+  for li, l in ipairs(levels) do
+    local pooled_s, pooled_t = {}, {}
+    local cs, tans, cratios, shallow = {}, {}, {}, {}
+    local per_seed = {}
+    for _, s in ipairs(seeds) do
+      local e = by[li] and by[li][s] or {depth = {}}
+      local tau_slump = e.slump and e.slump.result.yield_stress_Pa
+      local sig, tau = {}, {}
+      for fi, f in ipairs(fill_levels) do
+        local v = e.depth[fi] and e.depth[fi].result
+        local row = {set = l.label, value = l.value, seed = s, fill_level = f}
+        if v and v.yield_stress_Pa then
+          local z = v.fill_level - (v.vane.bottom + v.vane.height / 2)
+          row.depth_mid_m = z
+          row.cup_height = v.cup_height
+          row.fill_solid_fraction = v.fill_solid_fraction
+          row.bulk_density = v.mud_density * v.fill_solid_fraction
+          row.sigma_v_Pa = rheology.overburden{particle_density = v.mud_density, solid_fraction = v.fill_solid_fraction, depth = z}
+          row.particles = v.particles
+          row.peak_torque_Nm = v.startup.peak_torque_Nm
+          row.peak_angle_deg = v.startup.peak_angle_deg
+          row.peak_reached = v.startup.peak_reached
+          row.vane_yield_stress_Pa = v.yield_stress_Pa
+          row.wall_s = e.depth[fi].wall
+          sig[#sig + 1], tau[#tau + 1] = row.sigma_v_Pa, row.vane_yield_stress_Pa
+          pooled_s[#pooled_s + 1], pooled_t[#pooled_t + 1] = row.sigma_v_Pa, row.vane_yield_stress_Pa
+          if fi == 1 and tau_slump then
+            row.ratio_to_slump = row.vane_yield_stress_Pa / tau_slump
+            shallow[#shallow + 1] = row.ratio_to_slump
+          end
+        end
+        depth_runs[#depth_runs + 1] = row
+      end
+      local f, why = fit_or_error(sig, tau)
+      local ps = {seed = s, slump_yield_stress_Pa = tau_slump, points = #sig, fit = f, fit_error = why}
+      if f then
+        cs[#cs + 1], tans[#tans + 1] = f.c, f.tan_phi
+        if tau_slump then
+          ps.c_over_slump = f.c / tau_slump
+          cratios[#cratios + 1] = ps.c_over_slump
+        end
+      end
+      per_seed[#per_seed + 1] = ps
+    end
+    local pooled, why = fit_or_error(pooled_s, pooled_t)
+    local function ms(v)
+      local m, sd = report.mean_std(v)
+      return {mean = m, std = sd, values = v}
+    end
+    local ds = {set = l.label, value = l.value, per_seed = per_seed, pooled = pooled, pooled_error = why,
+                c_Pa = ms(cs), tan_phi = ms(tans), c_over_slump = ms(cratios), shallow_over_slump = ms(shallow),
+                slump_yield_stress_Pa = summary[li].slump_yield_stress_Pa}
+    if pooled and ds.slump_yield_stress_Pa.mean then ds.pooled_c_over_slump = pooled.c / ds.slump_yield_stress_Pa.mean end
+    ds.c_within_target = #cratios > 0 and math.abs(ds.c_over_slump.mean - 1) <= P.target
+    ds.shallow_within_target = #shallow > 0 and math.abs(ds.shallow_over_slump.mean - 1) <= P.target
+    depth.sets[li] = ds
+    frows[#frows + 1] = {l.label, l.value, #cs, report.cell(pooled and pooled.c), report.cell(pooled and pooled.se_c),
+                         report.cell(pooled and pooled.tan_phi), report.cell(pooled and pooled.se_tan_phi),
+                         report.cell(pooled and pooled.r2), report.cell(ds.c_Pa.mean), report.cell(ds.c_Pa.std),
+                         report.cell(ds.tan_phi.mean), report.cell(ds.tan_phi.std), report.cell(ds.slump_yield_stress_Pa.mean),
+                         report.cell(ds.c_over_slump.mean), report.cell(ds.c_over_slump.std), report.cell(ds.pooled_c_over_slump),
+                         tostring(ds.c_within_target), report.cell(ds.shallow_over_slump.mean), report.cell(ds.shallow_over_slump.std),
+                         tostring(ds.shallow_within_target)}
+  end
+  local dcols = {"set", "value", "seed", "fill_level", "cup_height", "depth_mid_m", "fill_solid_fraction", "bulk_density", "sigma_v_Pa",
+                 "particles", "peak_torque_Nm", "peak_angle_deg", "peak_reached", "vane_yield_stress_Pa", "ratio_to_slump", "wall_s"}
+  for _, r in ipairs(depth_runs) do
+    local line = {}
+    for k, col in ipairs(dcols) do
+      local v = r[col]
+      if type(v) == "boolean" then v = tostring(v) end
+      line[k] = report.cell(v)
+    end
+    drows[#drows + 1] = line
+  end
+  util.write_csv("ys_depth_runs.csv", dcols, drows)
+  util.write_csv("ys_depth_fit.csv", {"set", "value", "seeds", "c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "tan_phi_pooled_se",
+                                      "r2_pooled", "c_seed_mean_Pa", "c_seed_std_Pa", "tan_phi_seed_mean", "tan_phi_seed_std",
+                                      "slump_Pa", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump", "c_within_target",
+                                      "shallow_over_slump", "shallow_over_slump_std", "shallow_within_target"}, frows)
+end
+
 local doc = {parameter = P.parameter, seeds = seeds, slump_diameter = P.slump_diameter, rheometer_diameter = P.rheometer_diameter,
              slump_set = P.slump_set, rheometer_set = P.rheometer_set, target = P.target, runs = runs, summary = summary,
+             depth_series = depth, depth_runs = fill_levels and depth_runs or nil,
              failed = failed, finished = os.date("!%Y-%m-%dT%H:%M:%SZ")}
 report.write_json("yield_stress_study.json", doc)
 
@@ -167,6 +305,31 @@ set xrange [0.5:%d.5]; set yrange [0:*]; set xtics (%s)
 plot '%s' using 1:2:3 with yerrorbars pt 7 ps 1.5 title 'ratio', 1 lc rgb 'black' title 'agreement', \
      %g lc rgb 'gray' dt 2 title '+-%g %%', %g lc rgb 'gray' dt 2 notitle]],
     P.parameter, #summary, table.concat(xt, ", "), util.out("ys_ratio.dat"), 1 + P.target, 100 * P.target, 1 - P.target))
+  if depth then
+    local plots = {}
+    local colors = {"#1b9e77", "#d95f02", "#7570b3", "#e7298a", "#66a61e"}
+    for li, ds in ipairs(depth.sets) do
+      local pts = {}
+      for _, r in ipairs(depth_runs) do
+        if r.set == ds.set and r.sigma_v_Pa then pts[#pts + 1] = {r.sigma_v_Pa, r.vane_yield_stress_Pa, r.seed} end
+      end
+      local f = util.write_columns("ys_depth_" .. li .. ".dat", "sigma_v_Pa vane_yield_stress_Pa seed", pts)
+      local col = colors[(li - 1) % #colors + 1]
+      plots[#plots + 1] = string.format("'%s' using 1:2 with points pt 7 ps 1.3 lc rgb '%s' title '%s: vane peak'", f, col, ds.set)
+      if ds.pooled then
+        plots[#plots + 1] = string.format("%g + %g * x lc rgb '%s' title sprintf('%s: c = %%.0f +- %%.0f Pa, tan phi = %%.2f', %g, %g, %g)",
+                                          ds.pooled.c, ds.pooled.tan_phi, col, ds.set, ds.pooled.c, ds.pooled.se_c or 0, ds.pooled.tan_phi)
+      end
+      if ds.slump_yield_stress_Pa.mean then
+        plots[#plots + 1] = string.format("%g lc rgb '%s' dt 2 title '%s: tau_slump'", ds.slump_yield_stress_Pa.mean, col, ds.set)
+      end
+    end
+    pictures.depth = util.gnuplot("ys_depth", string.format([[
+set title 'Vane peak stress against the overburden at blade mid-height (Mohr-Coulomb fit, pooled seeds)'
+set xlabel 'sigma_v = rho_bulk g z [Pa]'; set ylabel 'shear stress [Pa]'; set grid; set key top left font ',9'
+set xrange [0:*]; set yrange [0:*]
+plot %s]], table.concat(plots, ", \\\n     ")))
+  end
 end
 
 print(string.format("%-10s %8s  %18s  %18s  %14s", "set", "value", "vane [Pa]", "slump [Pa]", "ratio"))
@@ -175,4 +338,17 @@ for _, s in ipairs(summary) do
                       s.vane_yield_stress_Pa.std, s.slump_yield_stress_Pa.mean, s.slump_yield_stress_Pa.std, s.ratio.mean,
                       s.ratio.std, s.within_target and "within target" or "NOT within target"))
 end
-paddy.result{summary = summary, runs = runs, failed = failed, pictures = pictures}
+if depth then
+  print(string.format("vane depth series at fill levels %s m: tau_peak = c + sigma_v tan(phi) (pooled over seeds; per seed mean +- std)",
+                      P.vane_fill_levels))
+  print(string.format("%-10s %8s  %16s  %14s  %16s  %16s  %16s", "set", "value", "c [Pa]", "tan phi", "c/slump", "c/slump seeds",
+                      "shallow/slump"))
+  for _, ds in ipairs(depth.sets) do
+    local p = ds.pooled or {}
+    print(string.format("%-10s %8g  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16.3f  %7.3f +- %-6.3f  %7.3f +- %-6.3f", ds.set, ds.value,
+                        p.c or 0 / 0, p.se_c or 0 / 0, p.tan_phi or 0 / 0, p.se_tan_phi or 0 / 0, ds.pooled_c_over_slump or 0 / 0,
+                        ds.c_over_slump.mean or 0 / 0, ds.c_over_slump.std or 0 / 0, ds.shallow_over_slump.mean or 0 / 0,
+                        ds.shallow_over_slump.std or 0 / 0))
+  end
+end
+paddy.result{summary = summary, runs = runs, depth_series = depth, failed = failed, pictures = pictures}

@@ -40,7 +40,7 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
-elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases)$")
+elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases|mohr_coulomb_fit)$")
   # Library checks written in Lua (tests/experiments/<case>.lua): each raises an error on a wrong
   # answer and writes ok = true at the end.
   run_paddy(code se run ${HERE}/${CASE}.lua --out out --threads 1)
@@ -368,6 +368,39 @@ elseif(CASE STREQUAL "validation_sa")
   expect_code(${code} 0)
   if(NOT se MATCHES "4 job\\(s\\) already done")
     message(FATAL_ERROR "the second invocation did not resume from the finished jobs")
+  endif()
+
+elseif(CASE STREQUAL "validation_ys")
+  # The yield-stress study with a vane depth series on tiny runs (one set, 2 seeds, 2 fill levels;
+  # 20 mm spheres in the cup, 40 mm in the cone, a 4 degree start-up): every run finishes, the
+  # study's files exist (the old ones and the depth series'), each seed's and the pooled fit exist
+  # and the pooled fit has the 4 points; ys_runs.csv's vane columns are filled (the reference level).
+  # A depth series with one fill level is refused before any run.
+  set(tiny --set values=0.06 --set seeds=1,2 --set rheometer_diameter=0.02 --set slump_diameter=0.04
+      "--set" "rheometer_set=startup_angle=4,settle_max_time=0.6,min_rest_time=0.1,insert_time=0.01"
+      --set slump_set=max_time=0.3 --set code_version=test)
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out out --threads 1 ${tiny}
+            --set vane_fill_levels=0.102,0.12)
+  expect_code(${code} 0)
+  foreach(f ys_runs.csv ys_summary.csv yield_stress_study.json ys_ratio.png ys_depth_runs.csv ys_depth_fit.csv ys_depth.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  result(failed failed)
+  expect_number(${failed} EQUAL 0 "failed runs")
+  result(n depth_series sets 0 pooled n)
+  expect_number(${n} EQUAL 4 "points of the pooled fit")
+  result(c1 depth_series sets 0 per_seed 0 fit c)
+  result(c2 depth_series sets 0 per_seed 1 fit c)
+  result(tv runs 0 vane_yield_stress_Pa)
+  expect_number(${tv} GREATER 0 "vane yield stress at the reference level")
+  file(STRINGS ${WORK}/out/ys_depth_runs.csv lines)
+  list(LENGTH lines n_lines)
+  expect_number(${n_lines} EQUAL 5 "lines of ys_depth_runs.csv (header + 2 seeds x 2 levels)")
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out one --threads 1 ${tiny}
+            --set vane_fill_levels=0.12)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "at least 2 fill levels")
+    message(FATAL_ERROR "one fill level: expected a refusal, got: ${se}")
   endif()
 
 elseif(CASE STREQUAL "validation_cg")

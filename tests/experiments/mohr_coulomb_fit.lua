@@ -1,0 +1,73 @@
+-- lib/rheology.lua's Mohr–Coulomb fit τ = c + σ tanφ (the vane depth series of
+-- validation/yield_stress.lua) and the overburden σ_v = ρ_p φ g z, on torques with known answers.
+local rheology = require("lib.rheology")
+local measure = require("paddy.measure")
+local function check(cond, fmt, ...)
+  if not cond then error(string.format(fmt, ...), 2) end
+end
+local function near(a, b, tol) return math.abs(a - b) <= tol end
+
+-- The overburden: 1680 kg/m³ particles at φ = 0.5, 60 mm deep → 1680·0.5·9.81·0.06 Pa.
+local sv = rheology.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 0.06}
+check(near(sv, 494.424, 1e-9), "overburden %.17g", sv)
+for _, bad in ipairs({{particle_density = 1680, solid_fraction = 0.5, depth = 0},
+                      {particle_density = 1680, solid_fraction = 0.5, depth = -0.01},
+                      {particle_density = 1680, solid_fraction = 1.2, depth = 0.06},
+                      {particle_density = 0, solid_fraction = 0.5, depth = 0.06}}) do
+  check(not pcall(rheology.overburden, bad), "overburden accepted a non-positive or impossible input")
+end
+
+-- Synthetic vane torques from a known material: c = 180 Pa, tanφ = 1.3, at three depths (fill
+-- levels above blades 30–90 mm high in a 50 mm vane), through the vane relation both ways.
+local vane = {diameter = 0.05, height = 0.06, cup_diameter = 0.1, sheared_ends = 2}
+local factor = measure.vane_torque_factor(vane)
+local c0, t0 = 180, 1.3
+local sigma, tau = {}, {}
+for k, fill in ipairs({0.102, 0.12, 0.15}) do
+  sigma[k] = rheology.overburden{particle_density = 1680, solid_fraction = 0.52, depth = fill - 0.06}
+  local torque = (c0 + t0 * sigma[k]) * factor
+  tau[k] = measure.vane_shear_stress(vane, torque)
+end
+local f = rheology.mohr_coulomb_fit{sigma = sigma, tau = tau}
+check(near(f.c, c0, 1e-8) and near(f.tan_phi, t0, 1e-11), "exact: c = %.17g, tan phi = %.17g", f.c, f.tan_phi)
+check(f.n == 3 and f.dof == 1, "n = %s, dof = %s", tostring(f.n), tostring(f.dof))
+check(f.se_c < 1e-8 and f.se_tan_phi < 1e-11, "exact data: standard errors %.3g, %.3g", f.se_c, f.se_tan_phi)
+check(near(f.r2, 1, 1e-12), "r2 = %.17g", f.r2)
+
+-- With scatter (two seeds, ± 40 Pa alternating): the closed form of least squares on
+-- x = 100, 200, 300 twice, y = 50 + 2x ± 40: slope 2 exactly (the ± cancels per x), intercept
+-- 50 + (mean of the ±) = 50; s² = SSE/(n−2) = 6·1600/4 = 2400; Sxx = 2·(100² + 0 + 100²) = 40000;
+-- se(tanφ) = √(2400/40000), se(c) = √2400 · √(1/6 + 200²/40000).
+local xs, ys = {100, 200, 300, 100, 200, 300}, {}
+for k, x in ipairs(xs) do ys[k] = 50 + 2 * x + (k <= 3 and 40 or -40) end
+f = rheology.mohr_coulomb_fit{sigma = xs, tau = ys}
+check(near(f.c, 50, 1e-10) and near(f.tan_phi, 2, 1e-12), "scatter: c = %.17g, tan phi = %.17g", f.c, f.tan_phi)
+check(near(f.se_tan_phi, math.sqrt(2400 / 40000), 1e-12), "se tan phi %.17g", f.se_tan_phi)
+check(near(f.se_c, math.sqrt(2400) * math.sqrt(1 / 6 + 1), 1e-10), "se c %.17g", f.se_c)
+-- Pure friction (c = 0) is found as such, and a strength independent of the pressure as tanφ = 0.
+f = rheology.mohr_coulomb_fit{sigma = {300, 450, 700}, tau = {0.8 * 300, 0.8 * 450, 0.8 * 700}}
+check(near(f.c, 0, 1e-9) and near(f.tan_phi, 0.8, 1e-13), "frictional: c = %.3g, tan phi = %.17g", f.c, f.tan_phi)
+f = rheology.mohr_coulomb_fit{sigma = {300, 450, 700}, tau = {210, 210, 210}}
+check(near(f.c, 210, 1e-10) and near(f.tan_phi, 0, 1e-14), "cohesive: c = %.17g, tan phi = %.3g", f.c, f.tan_phi)
+-- Two points: the exact line, no standard errors.
+f = rheology.mohr_coulomb_fit{sigma = {100, 300}, tau = {150, 250}}
+check(near(f.c, 100, 1e-12) and near(f.tan_phi, 0.5, 1e-15) and f.se_c == nil and f.dof == 0, "two points")
+
+-- Refusals: fewer than 2 depths, one overburden only, a non-positive or non-finite stress, unequal lengths.
+local function refuses(args, what, pattern)
+  local ok, msg = pcall(rheology.mohr_coulomb_fit, args)
+  check(not ok, "accepted %s", what)
+  check(tostring(msg):find(pattern), "%s: message '%s' lacks '%s'", what, tostring(msg), pattern)
+end
+refuses({sigma = {300}, tau = {500}}, "one point", "at least 2")
+refuses({sigma = {}, tau = {}}, "no point", "at least 2")
+refuses({sigma = {300, 300, 300}, tau = {400, 500, 450}}, "one overburden", "distinct")
+refuses({sigma = {0, 300}, tau = {100, 500}}, "zero stress", "positive")
+refuses({sigma = {-100, 300}, tau = {100, 500}}, "negative stress", "positive")
+refuses({sigma = {0 / 0, 300}, tau = {100, 500}}, "NaN stress", "positive")
+refuses({sigma = {math.huge, 300}, tau = {100, 500}}, "infinite stress", "positive")
+refuses({sigma = {100, 300}, tau = {100, 0 / 0}}, "NaN shear stress", "finite")
+refuses({sigma = {100, 300}, tau = {100}}, "unequal lengths", "shear stresses")
+refuses({sigma = nil, tau = {100}}, "no sigma", "needs sigma")
+
+paddy.result{ok = true}
