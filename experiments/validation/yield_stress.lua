@@ -16,14 +16,16 @@
 --
 -- Vane depth series (vane_fill_levels, e.g. 0.102,0.12,0.15): the start-up test at each fill level
 -- (the same blades, so a different overburden above them; the cup at least as high as the fill).
--- Per set the Mohr–Coulomb line τ_peak = c + σ_v tanφ by least squares (lib/rheology.lua) against
+-- Per set the Mohr–Coulomb line τ_peak = c + σ_v tanφ by least squares (lib/mohr_coulomb.lua) against
 -- the mean vertical stress at the blades' mid-height σ_v = ρ_p φ g z (φ the run's measured fill
 -- solid fraction, z the depth of the mid-height below the fill level): per seed, then mean ± std of
 -- c, tanφ and c / τ_slump over the seeds, and pooled over the seeds with the standard errors of c
 -- and tanφ. Also the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the
--- vane at reference_fill_level. Extra outputs: ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
+-- vane at reference_fill_level. With janssen_lateral_ratio = K > 0 also the fit against Janssen's
+-- σ_v (the cup wall carrying part of the weight; lib/mohr_coulomb.lua). Extra outputs:
+-- ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
 local util = require("lib.util")
-local rheology = require("lib.rheology")
+local mohr_coulomb = require("lib.mohr_coulomb")
 local report = require("report")
 
 local P = paddy.parameters{
@@ -37,6 +39,8 @@ local P = paddy.parameters{
   {name = "rheometer_set", default = "", description = "extra rheometer.lua parameters for every run, e.g. 'startup_rpm=1'"},
   {name = "vane_fill_levels", default = "", description = "vane depth series: fill levels [m] of the rheometer runs (comma-separated, at least 2; empty: one run at rheometer.lua's fill level)"},
   {name = "reference_fill_level", default = 0.12, unit = "m", min = 0.01, max = 1, description = "with vane_fill_levels: the level whose vane fills ys_runs.csv's vane columns (rheometer.lua's default fill)"},
+  {name = "janssen_lateral_ratio", default = 0, min = 0, max = 10, description = "with vane_fill_levels: also fit against Janssen's vertical stress with this lateral stress ratio K (0: no such fit)"},
+  {name = "janssen_wall_friction", default = 0.6, min = 0, max = 10, description = "with janssen_lateral_ratio: the wall friction coefficient of the cup (lib/mud.lua's mud-steel sliding friction)"},
   {name = "target", default = 0.25, min = 0, max = 10, description = "agreement target: |mean ratio − 1| within this"},
   {name = "max_parallel", default = 1, type = "integer", min = 1, max = 256, description = "runs at once"},
   {name = "threads_per_job", default = 1, type = "integer", min = 1, max = 256, description = "threads of each run"},
@@ -199,18 +203,19 @@ if fill_levels then
   depth = {fill_levels = fill_levels, reference_fill_level = reference_fill and P.reference_fill_level or nil, sets = {}}
   local drows, frows = {}, {}
   local function fit_or_error(sig, tau)
-    local ok, f = pcall(rheology.mohr_coulomb_fit, {sigma = sig, tau = tau})
+    local ok, f = pcall(mohr_coulomb.fit, {sigma = sig, tau = tau})
     if ok then return f end
     return nil, tostring(f)
   end
   for li, l in ipairs(levels) do
-    local pooled_s, pooled_t = {}, {}
+    local pooled_s, pooled_t, pooled_j = {}, {}, {}
+    local cjs, cjratios = {}, {}
     local cs, tans, cratios, shallow = {}, {}, {}, {}
     local per_seed = {}
     for _, s in ipairs(seeds) do
       local e = by[li] and by[li][s] or {depth = {}}
       local tau_slump = e.slump and e.slump.result.yield_stress_Pa
-      local sig, tau = {}, {}
+      local sig, tau, sigj = {}, {}, {}
       for fi, f in ipairs(fill_levels) do
         local v = e.depth[fi] and e.depth[fi].result
         local row = {set = l.label, value = l.value, seed = s, fill_level = f}
@@ -220,7 +225,13 @@ if fill_levels then
           row.cup_height = v.cup_height
           row.fill_solid_fraction = v.fill_solid_fraction
           row.bulk_density = v.mud_density * v.fill_solid_fraction
-          row.sigma_v_Pa = rheology.overburden{particle_density = v.mud_density, solid_fraction = v.fill_solid_fraction, depth = z}
+          row.sigma_v_Pa = mohr_coulomb.overburden{particle_density = v.mud_density, solid_fraction = v.fill_solid_fraction, depth = z}
+          if P.janssen_lateral_ratio > 0 then
+            row.sigma_janssen_Pa = mohr_coulomb.overburden{particle_density = v.mud_density, solid_fraction = v.fill_solid_fraction,
+              depth = z, janssen = {lateral_ratio = P.janssen_lateral_ratio, wall_friction = P.janssen_wall_friction,
+                                    radius = v.vane.cup_diameter / 2}}
+            sigj[#sigj + 1], pooled_j[#pooled_j + 1] = row.sigma_janssen_Pa, row.sigma_janssen_Pa
+          end
           row.particles = v.particles
           row.peak_torque_Nm = v.startup.peak_torque_Nm
           row.peak_angle_deg = v.startup.peak_angle_deg
@@ -245,6 +256,13 @@ if fill_levels then
           cratios[#cratios + 1] = ps.c_over_slump
         end
       end
+      if #sigj > 0 then
+        ps.janssen_fit, ps.janssen_fit_error = fit_or_error(sigj, tau)
+        if ps.janssen_fit then
+          cjs[#cjs + 1] = ps.janssen_fit.c
+          if tau_slump then cjratios[#cjratios + 1] = ps.janssen_fit.c / tau_slump end
+        end
+      end
       per_seed[#per_seed + 1] = ps
     end
     local pooled, why = fit_or_error(pooled_s, pooled_t)
@@ -256,6 +274,11 @@ if fill_levels then
                 c_Pa = ms(cs), tan_phi = ms(tans), c_over_slump = ms(cratios), shallow_over_slump = ms(shallow),
                 slump_yield_stress_Pa = summary[li].slump_yield_stress_Pa}
     if pooled and ds.slump_yield_stress_Pa.mean then ds.pooled_c_over_slump = pooled.c / ds.slump_yield_stress_Pa.mean end
+    if #pooled_j > 0 then
+      ds.janssen = {lateral_ratio = P.janssen_lateral_ratio, wall_friction = P.janssen_wall_friction, c_Pa = ms(cjs),
+                    c_over_slump = ms(cjratios)}
+      ds.janssen.pooled, ds.janssen.pooled_error = fit_or_error(pooled_j, pooled_t)
+    end
     ds.c_within_target = #cratios > 0 and math.abs(ds.c_over_slump.mean - 1) <= P.target
     ds.shallow_within_target = #shallow > 0 and math.abs(ds.shallow_over_slump.mean - 1) <= P.target
     depth.sets[li] = ds
@@ -265,9 +288,15 @@ if fill_levels then
                          report.cell(ds.tan_phi.mean), report.cell(ds.tan_phi.std), report.cell(ds.slump_yield_stress_Pa.mean),
                          report.cell(ds.c_over_slump.mean), report.cell(ds.c_over_slump.std), report.cell(ds.pooled_c_over_slump),
                          tostring(ds.c_within_target), report.cell(ds.shallow_over_slump.mean), report.cell(ds.shallow_over_slump.std),
-                         tostring(ds.shallow_within_target)}
+                         tostring(ds.shallow_within_target),
+                         report.cell(ds.janssen and ds.janssen.pooled and ds.janssen.pooled.c),
+                         report.cell(ds.janssen and ds.janssen.pooled and ds.janssen.pooled.se_c),
+                         report.cell(ds.janssen and ds.janssen.pooled and ds.janssen.pooled.tan_phi),
+                         report.cell(ds.janssen and ds.janssen.c_over_slump.mean),
+                         report.cell(ds.janssen and ds.janssen.c_over_slump.std)}
   end
   local dcols = {"set", "value", "seed", "fill_level", "cup_height", "depth_mid_m", "fill_solid_fraction", "bulk_density", "sigma_v_Pa",
+                 "sigma_janssen_Pa",
                  "particles", "peak_torque_Nm", "peak_angle_deg", "peak_reached", "vane_yield_stress_Pa", "ratio_to_slump", "wall_s"}
   for _, r in ipairs(depth_runs) do
     local line = {}
@@ -282,7 +311,9 @@ if fill_levels then
   util.write_csv("ys_depth_fit.csv", {"set", "value", "seeds", "c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "tan_phi_pooled_se",
                                       "r2_pooled", "c_seed_mean_Pa", "c_seed_std_Pa", "tan_phi_seed_mean", "tan_phi_seed_std",
                                       "slump_Pa", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump", "c_within_target",
-                                      "shallow_over_slump", "shallow_over_slump_std", "shallow_within_target"}, frows)
+                                      "shallow_over_slump", "shallow_over_slump_std", "shallow_within_target", "c_janssen_pooled_Pa",
+                                      "c_janssen_pooled_se_Pa", "tan_phi_janssen_pooled", "c_janssen_over_slump",
+                                      "c_janssen_over_slump_std"}, frows)
 end
 
 local doc = {parameter = P.parameter, seeds = seeds, slump_diameter = P.slump_diameter, rheometer_diameter = P.rheometer_diameter,
@@ -349,6 +380,12 @@ if depth then
                         p.c or 0 / 0, p.se_c or 0 / 0, p.tan_phi or 0 / 0, p.se_tan_phi or 0 / 0, ds.pooled_c_over_slump or 0 / 0,
                         ds.c_over_slump.mean or 0 / 0, ds.c_over_slump.std or 0 / 0, ds.shallow_over_slump.mean or 0 / 0,
                         ds.shallow_over_slump.std or 0 / 0))
+    local j = ds.janssen
+    if j and j.pooled then
+      print(string.format("%-10s %8s  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16s  %7.3f +- %-6.3f  (Janssen K = %g, mu_w = %g)", "", "",
+                          j.pooled.c, j.pooled.se_c or 0 / 0, j.pooled.tan_phi, j.pooled.se_tan_phi or 0 / 0, "",
+                          j.c_over_slump.mean or 0 / 0, j.c_over_slump.std or 0 / 0, j.lateral_ratio, j.wall_friction))
+    end
   end
 end
 paddy.result{summary = summary, runs = runs, depth_series = depth, failed = failed, pictures = pictures}

@@ -1,6 +1,6 @@
--- lib/rheology.lua's Mohr–Coulomb fit τ = c + σ tanφ (the vane depth series of
+-- lib/mohr_coulomb.lua's Mohr–Coulomb fit τ = c + σ tanφ (the vane depth series of
 -- validation/yield_stress.lua) and the overburden σ_v = ρ_p φ g z, on torques with known answers.
-local rheology = require("lib.rheology")
+local mohr_coulomb = require("lib.mohr_coulomb")
 local measure = require("paddy.measure")
 local function check(cond, fmt, ...)
   if not cond then error(string.format(fmt, ...), 2) end
@@ -8,14 +8,32 @@ end
 local function near(a, b, tol) return math.abs(a - b) <= tol end
 
 -- The overburden: 1680 kg/m³ particles at φ = 0.5, 60 mm deep → 1680·0.5·9.81·0.06 Pa.
-local sv = rheology.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 0.06}
+local sv = mohr_coulomb.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 0.06}
 check(near(sv, 494.424, 1e-9), "overburden %.17g", sv)
 for _, bad in ipairs({{particle_density = 1680, solid_fraction = 0.5, depth = 0},
                       {particle_density = 1680, solid_fraction = 0.5, depth = -0.01},
                       {particle_density = 1680, solid_fraction = 1.2, depth = 0.06},
                       {particle_density = 0, solid_fraction = 0.5, depth = 0.06}}) do
-  check(not pcall(rheology.overburden, bad), "overburden accepted a non-positive or impossible input")
+  check(not pcall(mohr_coulomb.overburden, bad), "overburden accepted a non-positive or impossible input")
 end
+
+-- Janssen: λ = R/(2Kμ) = 0.05/(2·0.5·0.6) m; σ = ρ_b g λ (1 − e^(−z/λ)); K μ = 0 is hydrostatic;
+-- a short depth (z ≪ λ) is nearly hydrostatic, a deep one tends to ρ_b g λ.
+local jan = {lateral_ratio = 0.5, wall_friction = 0.6, radius = 0.05}
+local lambda = 0.05 / 0.6
+local sj = mohr_coulomb.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 0.06, janssen = jan}
+check(near(sj, 1680 * 0.5 * 9.81 * lambda * (1 - math.exp(-0.06 / lambda)), 1e-9), "Janssen %.17g", sj)
+check(sj < sv, "Janssen %.6g below hydrostatic %.6g", sj, sv)
+sj = mohr_coulomb.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 0.06,
+                         janssen = {lateral_ratio = 0, wall_friction = 0.6, radius = 0.05}}
+check(sj == sv, "K = 0: hydrostatic, got %.17g", sj)
+sj = mohr_coulomb.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 1e-6, janssen = jan}
+check(near(sj / (1680 * 0.5 * 9.81 * 1e-6), 1, 1e-4), "shallow Janssen not hydrostatic")
+sj = mohr_coulomb.overburden{particle_density = 1680, solid_fraction = 0.5, depth = 10, janssen = jan}
+check(near(sj, 1680 * 0.5 * 9.81 * lambda, 1e-6), "deep Janssen %.17g", sj)
+check(not pcall(mohr_coulomb.overburden, {particle_density = 1680, solid_fraction = 0.5, depth = 0.06,
+                                      janssen = {lateral_ratio = -1, wall_friction = 0.6, radius = 0.05}}),
+      "accepted a negative lateral stress ratio")
 
 -- Synthetic vane torques from a known material: c = 180 Pa, tanφ = 1.3, at three depths (fill
 -- levels above blades 30–90 mm high in a 50 mm vane), through the vane relation both ways.
@@ -24,11 +42,11 @@ local factor = measure.vane_torque_factor(vane)
 local c0, t0 = 180, 1.3
 local sigma, tau = {}, {}
 for k, fill in ipairs({0.102, 0.12, 0.15}) do
-  sigma[k] = rheology.overburden{particle_density = 1680, solid_fraction = 0.52, depth = fill - 0.06}
+  sigma[k] = mohr_coulomb.overburden{particle_density = 1680, solid_fraction = 0.52, depth = fill - 0.06}
   local torque = (c0 + t0 * sigma[k]) * factor
   tau[k] = measure.vane_shear_stress(vane, torque)
 end
-local f = rheology.mohr_coulomb_fit{sigma = sigma, tau = tau}
+local f = mohr_coulomb.fit{sigma = sigma, tau = tau}
 check(near(f.c, c0, 1e-8) and near(f.tan_phi, t0, 1e-11), "exact: c = %.17g, tan phi = %.17g", f.c, f.tan_phi)
 check(f.n == 3 and f.dof == 1, "n = %s, dof = %s", tostring(f.n), tostring(f.dof))
 check(f.se_c < 1e-8 and f.se_tan_phi < 1e-11, "exact data: standard errors %.3g, %.3g", f.se_c, f.se_tan_phi)
@@ -40,22 +58,22 @@ check(near(f.r2, 1, 1e-12), "r2 = %.17g", f.r2)
 -- se(tanφ) = √(2400/40000), se(c) = √2400 · √(1/6 + 200²/40000).
 local xs, ys = {100, 200, 300, 100, 200, 300}, {}
 for k, x in ipairs(xs) do ys[k] = 50 + 2 * x + (k <= 3 and 40 or -40) end
-f = rheology.mohr_coulomb_fit{sigma = xs, tau = ys}
+f = mohr_coulomb.fit{sigma = xs, tau = ys}
 check(near(f.c, 50, 1e-10) and near(f.tan_phi, 2, 1e-12), "scatter: c = %.17g, tan phi = %.17g", f.c, f.tan_phi)
 check(near(f.se_tan_phi, math.sqrt(2400 / 40000), 1e-12), "se tan phi %.17g", f.se_tan_phi)
 check(near(f.se_c, math.sqrt(2400) * math.sqrt(1 / 6 + 1), 1e-10), "se c %.17g", f.se_c)
 -- Pure friction (c = 0) is found as such, and a strength independent of the pressure as tanφ = 0.
-f = rheology.mohr_coulomb_fit{sigma = {300, 450, 700}, tau = {0.8 * 300, 0.8 * 450, 0.8 * 700}}
+f = mohr_coulomb.fit{sigma = {300, 450, 700}, tau = {0.8 * 300, 0.8 * 450, 0.8 * 700}}
 check(near(f.c, 0, 1e-9) and near(f.tan_phi, 0.8, 1e-13), "frictional: c = %.3g, tan phi = %.17g", f.c, f.tan_phi)
-f = rheology.mohr_coulomb_fit{sigma = {300, 450, 700}, tau = {210, 210, 210}}
+f = mohr_coulomb.fit{sigma = {300, 450, 700}, tau = {210, 210, 210}}
 check(near(f.c, 210, 1e-10) and near(f.tan_phi, 0, 1e-14), "cohesive: c = %.17g, tan phi = %.3g", f.c, f.tan_phi)
 -- Two points: the exact line, no standard errors.
-f = rheology.mohr_coulomb_fit{sigma = {100, 300}, tau = {150, 250}}
+f = mohr_coulomb.fit{sigma = {100, 300}, tau = {150, 250}}
 check(near(f.c, 100, 1e-12) and near(f.tan_phi, 0.5, 1e-15) and f.se_c == nil and f.dof == 0, "two points")
 
 -- Refusals: fewer than 2 depths, one overburden only, a non-positive or non-finite stress, unequal lengths.
 local function refuses(args, what, pattern)
-  local ok, msg = pcall(rheology.mohr_coulomb_fit, args)
+  local ok, msg = pcall(mohr_coulomb.fit, args)
   check(not ok, "accepted %s", what)
   check(tostring(msg):find(pattern), "%s: message '%s' lacks '%s'", what, tostring(msg), pattern)
 end
