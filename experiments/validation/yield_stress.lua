@@ -3,7 +3,7 @@
 -- yield stress the slump implies (experiments/slump.lua, Schowalter & Christensen 1998 cone
 -- model), for the same mud at several parameter sets (default: the JKR surface energy at the low,
 -- centre and high levels of the reference's Table 3), each with several seeds.
--- Documentation: docs/validation.md §6.
+-- Documentation: docs/validation.md §6 and §6.1 (the depth series).
 --
 --   paddy run experiments/validation/yield_stress.lua --out results/validation/yield_stress \
 --       [--set surface_energies=0.02,0.06,0.1 --set seeds=1,2 --set slump_diameter=0.012 ...]
@@ -20,7 +20,7 @@
 -- the mean vertical stress at the blades' mid-height σ_v = ρ_p φ g z (φ the run's measured fill
 -- solid fraction, z the depth of the mid-height below the fill level): per seed, then mean ± std of
 -- c, tanφ and c / τ_slump over the seeds, and pooled over the seeds with the standard errors of c
--- and tanφ. Also the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the
+-- and tanφ; c counts as determined (and can be within target) when the pooled c > 2 se(c). Also the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the
 -- vane at reference_fill_level. With janssen_lateral_ratio = K > 0 also the fit against Janssen's
 -- σ_v (the cup wall carrying part of the weight; lib/mohr_coulomb.lua). Extra outputs:
 -- ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
@@ -279,7 +279,10 @@ if fill_levels then
                     c_over_slump = ms(cjratios)}
       ds.janssen.pooled, ds.janssen.pooled_error = fit_or_error(pooled_j, pooled_t)
     end
-    ds.c_within_target = #cratios > 0 and math.abs(ds.c_over_slump.mean - 1) <= P.target
+    -- The intercept is determined when the pooled fit puts it at least 2 standard errors above 0;
+    -- otherwise the ratio's agreement says nothing and within_target is false.
+    ds.c_determined = pooled ~= nil and pooled.se_c ~= nil and pooled.c > 2 * pooled.se_c
+    ds.c_within_target = ds.c_determined and #cratios > 0 and math.abs(ds.c_over_slump.mean - 1) <= P.target
     ds.shallow_within_target = #shallow > 0 and math.abs(ds.shallow_over_slump.mean - 1) <= P.target
     depth.sets[li] = ds
     frows[#frows + 1] = {l.label, l.value, #cs, report.cell(pooled and pooled.c), report.cell(pooled and pooled.se_c),
@@ -287,7 +290,7 @@ if fill_levels then
                          report.cell(pooled and pooled.r2), report.cell(ds.c_Pa.mean), report.cell(ds.c_Pa.std),
                          report.cell(ds.tan_phi.mean), report.cell(ds.tan_phi.std), report.cell(ds.slump_yield_stress_Pa.mean),
                          report.cell(ds.c_over_slump.mean), report.cell(ds.c_over_slump.std), report.cell(ds.pooled_c_over_slump),
-                         tostring(ds.c_within_target), report.cell(ds.shallow_over_slump.mean), report.cell(ds.shallow_over_slump.std),
+                         tostring(ds.c_determined), tostring(ds.c_within_target), report.cell(ds.shallow_over_slump.mean), report.cell(ds.shallow_over_slump.std),
                          tostring(ds.shallow_within_target),
                          report.cell(ds.janssen and ds.janssen.pooled and ds.janssen.pooled.c),
                          report.cell(ds.janssen and ds.janssen.pooled and ds.janssen.pooled.se_c),
@@ -310,7 +313,7 @@ if fill_levels then
   util.write_csv("ys_depth_runs.csv", dcols, drows)
   util.write_csv("ys_depth_fit.csv", {"set", "value", "seeds", "c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "tan_phi_pooled_se",
                                       "r2_pooled", "c_seed_mean_Pa", "c_seed_std_Pa", "tan_phi_seed_mean", "tan_phi_seed_std",
-                                      "slump_Pa", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump", "c_within_target",
+                                      "slump_Pa", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump", "c_determined", "c_within_target",
                                       "shallow_over_slump", "shallow_over_slump_std", "shallow_within_target", "c_janssen_pooled_Pa",
                                       "c_janssen_pooled_se_Pa", "tan_phi_janssen_pooled", "c_janssen_over_slump",
                                       "c_janssen_over_slump_std"}, frows)
