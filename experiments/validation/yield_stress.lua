@@ -20,8 +20,9 @@
 -- the mean vertical stress at the blades' mid-height σ_v = ρ_p φ g z (φ the run's measured fill
 -- solid fraction, z the depth of the mid-height below the fill level): per seed, then mean ± std of
 -- c, tanφ and c / τ_slump over the seeds, and pooled over the seeds with the standard errors of c
--- and tanφ; c counts as determined (and can be within target) when the pooled c > 2 se(c). Also the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the
--- vane at reference_fill_level. With janssen_lateral_ratio = K > 0 also the fit against Janssen's
+-- and tanφ; c counts as determined (and can be within target) when the pooled c > 2 se(c). Also
+-- the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the vane at
+-- reference_fill_level. With janssen_lateral_ratio = K > 0 also the fit against Janssen's
 -- σ_v (the cup wall carrying part of the weight; lib/mohr_coulomb.lua). Extra outputs:
 -- ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
 local util = require("lib.util")
