@@ -375,7 +375,7 @@ elseif(CASE STREQUAL "validation_ys")
   # 20 mm spheres in the cup, 40 mm in the cone, a 4 degree start-up): every run finishes, the
   # study's files exist (the old ones and the depth series'), each seed's and the pooled fit exist
   # and the pooled fit has the 4 points; ys_runs.csv's vane columns are filled (the reference level).
-  # A depth series with one fill level is refused before any run.
+  # Without a depth series the study runs as before; a depth series with one fill level is refused.
   set(tiny --set values=0.06 --set seeds=1,2 --set rheometer_diameter=0.02 --set slump_diameter=0.04
       "--set" "rheometer_set=startup_angle=4,settle_max_time=0.6,min_rest_time=0.1,insert_time=0.01"
       --set slump_set=max_time=0.3 --set code_version=test)
@@ -396,6 +396,19 @@ elseif(CASE STREQUAL "validation_ys")
   file(STRINGS ${WORK}/out/ys_depth_runs.csv lines)
   list(LENGTH lines n_lines)
   expect_number(${n_lines} EQUAL 5 "lines of ys_depth_runs.csv (header + 2 seeds x 2 levels)")
+  # Without a depth series the study is as before: one vane per set and seed (its slumps shared
+  # through the campaign directory), its files, no depth files.
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out plain --threads 1 ${tiny}
+            --set campaign_dir=${WORK}/out/campaign)
+  expect_code(${code} 0)
+  foreach(f ys_runs.csv ys_summary.csv yield_stress_study.json ys_ratio.png)
+    expect_file(${WORK}/plain/${f})
+  endforeach()
+  if(EXISTS ${WORK}/plain/ys_depth_fit.csv)
+    message(FATAL_ERROR "a depth-series file without vane_fill_levels")
+  endif()
+  result_json(GET plain ratio summary 0 ratio mean)
+  expect_number(${ratio} GREATER 0 "ratio without a depth series")
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out one --threads 1 ${tiny}
             --set vane_fill_levels=0.12)
   expect_code(${code} 2)
