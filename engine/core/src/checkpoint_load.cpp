@@ -266,7 +266,7 @@ void Simulation::loadCheckpoint(const std::string& path) {
       if (!std::binary_search(ids.begin(), ids.end(), wid[k]))
         r.refuse("dataset 'walls/particle_id'", "holds " + std::to_string(wid[k]) + row + ", the id of no particle");
       wall_state[k] = {wid[k], static_cast<std::uint32_t>(wwall[k]), static_cast<std::uint32_t>(wkey[k])};
-      if (k > 0 && std::make_tuple(wall_state[k - 1].particle_id, wall_state[k - 1].wall, wall_state[k - 1].key) >=
+      if (k > 0 && std::make_tuple(wall_state[k - 1].particle_id, wall_state[k - 1].wall, wall_state[k - 1].key) >
                        std::make_tuple(wall_state[k].particle_id, wall_state[k].wall, wall_state[k].key))
         r.refuse("dataset 'walls/particle_id'", "is not in increasing order of (particle id, wall, key)" + row);
     }
