@@ -24,7 +24,7 @@ using namespace paddy::fuzz;
 
 namespace {
 
-const char* const kScript = R"(
+const char* const kScript = R"lua(
 local P = paddy.parameters{
   checkpoint = {default = "", type = "string", description = "checkpoint file (absolute path)"},
   write = {default = 0, type = "integer", min = 0, max = 1, description = "1: only write the checkpoint at step 30"},
@@ -61,7 +61,7 @@ else
   end
 end
 paddy.result{steps = sim:steps()}
-)";
+)lua";
 
 const Model& baseModel() {
   static const Model m = [] {
