@@ -18,7 +18,9 @@
 #include "checkpoint_model.hpp"
 #include "fuzz_script.hpp"
 
+#include <cstdlib>
 #include <cstring>
+#include <dlfcn.h>
 
 using namespace paddy::fuzz;
 
@@ -63,9 +65,27 @@ end
 paddy.result{steps = sim:steps()}
 )lua";
 
+// The contact-model plugins stay loaded for the whole process: each run loads and unloads them,
+// and libFuzzer keeps writing the coverage counters of every instrumented library it has seen,
+// so an unloaded plugin would crash it. A second reference (RTLD_NODELETE) keeps each mapped.
+void pinPlugins() {
+  const char* env = std::getenv("PADDY_PLUGIN_PATH");
+  std::string dirs = env && *env ? env : PADDY_FUZZ_PLUGIN_DIR;
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const auto end = std::min(dirs.find(':', start), dirs.size());
+    const std::filesystem::path dir = dirs.substr(start, end - start);
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(dir, ec))
+      if (e.path().extension() == ".so") dlopen(e.path().c_str(), RTLD_NOW | RTLD_NODELETE);
+    start = end + 1;
+  }
+}
+
 const Model& baseModel() {
   static const Model m = [] {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // HDF5's own error stacks would flood the log
+    pinPlugins();
     const std::string base = (scratchDir() / "base_checkpoint.h5").string();
     const auto r = runFixedScript("checkpoint", kScript, {{"checkpoint", base}, {"write", "1"}});
     if (r.code != paddy::lua::kExitOk) {
