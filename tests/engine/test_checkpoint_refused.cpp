@@ -67,7 +67,7 @@ TEST_CASE("a damaged checkpoint is refused naming the file, the dataset and the 
   const std::string good = (dir / "good.h5").string(), bad = (dir / "bad.h5").string();
   auto writer = makePile();
   writer->step(200);
-  REQUIRE(writer->contacts().size() > 10);
+  REQUIRE(writer->neighbourListBuilds() > 0);  // a neighbour list (the range2 case needs its slots)
   writer->saveCheckpoint(good);
 
   struct Case {
