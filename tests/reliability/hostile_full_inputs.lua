@@ -1,6 +1,6 @@
 -- Input files for hostile_full_run.sh (docs/reliability.md, section 4): a miniature calibration
 -- input (tests/calibration/mini_mud.json: 40 mm spheres, small designs, no rheometer) and a
--- miniature discovery input (one slump at a fast lift, one free parameter and one candidate, the
+-- miniature discovery input (one slump at a fast lift, no free parameter, one candidate: the
 -- fewest simulations the workflow allows) whose free text (the descriptions, every factor unit) holds hostile strings:
 -- quotes, $(...) and backticks that would create the canary file, ;, a line break followed by
 -- a command, ../, markup and non-ASCII. Also one input of each with a hostile name (a response
@@ -32,7 +32,7 @@ local disc = {
   description = description,
   experiments = {{name = "slump", script = "slump.lua", set = {lift_speed = 0.3},
                   measured = {slump_mm = 231, slump_flow_mm = 480}, sigma = {slump_mm = 5, slump_flow_mm = 10}}},
-  free_parameters = {{parameter = "jkr_surface_energy", low = 0.0, high = 0.2, start = 0.096}},
+  free_parameters = {},  -- allowed by the reader; the run used to fail on it in paddy.doe.diagnose
   candidates = {{name = "wall_adhesion", parameter = "mud_steel_surface_energy", low = 0, high = 0.3}},
   settings = {iterations = 0, replicates = 5, signature_seeds = 1, confirm_seeds = 1, start_scan = 0,
               thresholds = "tables"},
