@@ -18,7 +18,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 dir=build-asan
 jobs="${PADDY_JOBS:-$(nproc)}"
-targets=(mesh csv doe_analyze doe_optimize doe_diagnose read_json set calibration_input discovery_input)
+targets=(mesh csv doe_analyze doe_optimize doe_diagnose read_json set calibration_input discovery_input checkpoint)
 configure() {
   # The same configuration as scripts/sanitize.sh address (which configures it when missing).
   [ -f $dir/CMakeCache.txt ] && return

@@ -37,7 +37,7 @@ address)
                  paddy_campaign_tests)
   engine=("${engine_suites[@]}" campaign_driver paddy paddy_hertz_mindlin paddy_jkr paddy_rolling_friction
           paddy_liquid_bridge paddy_lubrication paddy_plastic_adhesion paddy_geometry
-          fuzz_read_json fuzz_set fuzz_calibration_input fuzz_discovery_input fuzz_mesh)
+          fuzz_read_json fuzz_set fuzz_calibration_input fuzz_discovery_input fuzz_mesh fuzz_checkpoint)
   with_engine="${PADDY_ASAN_ENGINE:-1}"
   [ "$with_engine" = 0 ] || targets+=("${engine[@]}")
   cmake --build $dir -j"$jobs" --target "${targets[@]}"
@@ -62,7 +62,7 @@ address)
     done
     # The command-line cases run the instrumented `paddy` (and its plugins) through CMake scripts;
     # the engine-side fuzz replays feed every saved input once.
-    ctest --test-dir $dir -j"$jobs" -R '^(cli\.|fuzz\.(read_json|set|calibration_input|discovery_input|mesh)$)' \
+    ctest --test-dir $dir -j"$jobs" -R '^(cli\.|fuzz\.(read_json|set|calibration_input|discovery_input|mesh|checkpoint)$)' \
       --output-on-failure
   fi
   ;;

@@ -47,7 +47,7 @@ Eigen::MatrixXd matrix(const json& j, const std::string& what, Eigen::Index cols
   Eigen::MatrixXd M(static_cast<Eigen::Index>(j.size()), static_cast<Eigen::Index>(c));
   for (std::size_t i = 0; i < j.size(); ++i) {
     const std::string row = what + " row " + std::to_string(i + 1);
-    if (!j[i].is_array()) throw DoeError(row + ": must be a list of numbers");
+    if (!j[i].is_array() && !(c == 0 && emptyTable(j[i]))) throw DoeError(row + ": must be a list of numbers");
     if (j[i].size() != c)
       throw DoeError(row + ": " + std::to_string(j[i].size()) + " entries, row 1 has " + std::to_string(c));
     for (std::size_t k = 0; k < c; ++k)

@@ -1,26 +1,44 @@
 #!/usr/bin/env bash
 # kill -9 of a running campaign at random moments, then a restart with the same output directory
-# (docs/reliability.md, section 3). The campaign (campaign_stages.lua) is shaped like a
-# calibration: four jobs, an analysis between the stages that saves its choice, two more jobs,
-# a summary. Each trial starts it, kills the runner and every job it runs with SIGKILL at a
-# seeded random moment in [0, 1.05 T] (T: the uninterrupted run's time), starts it again until it
-# completes, and requires:
-#   * it completes, and its result.json, stage1.json, summary.json and every job's results equal
-#     the uninterrupted run's (compare_runs.lua; every JSON file under the directory parses);
+# (docs/reliability.md, section 3). Two campaigns (MODE):
+#   stages       (default) campaign_stages.lua, shaped like a calibration: four jobs, an analysis
+#                between the stages that saves its choice, two more jobs, a summary;
+#   calibration  the real experiments/calibrate_paddy_mud.lua in the miniature configuration of
+#                tests/calibration (mini_mud.json: 40 mm spheres, small designs, both strategies,
+#                the rheometer), about a minute uninterrupted on 2 cores.
+# Each trial starts it, kills the runner and every job it runs with SIGKILL at a seeded random
+# moment in [0, 1.05 T] (T: the uninterrupted run's time), starts it again until it completes,
+# and requires:
+#   * it completes, and its results equal the uninterrupted run's (stages: result.json,
+#     stage1.json, summary.json and every job's results, compare_runs.lua; calibration: every
+#     check of tests/calibration/check_calibration.lua and result.json identical); every JSON
+#     file under the directory parses;
 #   * every job that had finished before the kill is byte-identical afterwards (result.json,
 #     pile.json, snapshots: MD5 taken at the kill);
 #   * every HDF5 file opens (h5ls) and every job's snapshots hold the same data as the
 #     uninterrupted run's (h5diff).
-#   campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED]
+#   campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED] [MODE]
 set -euo pipefail
 paddy=${1:?usage: campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED]}
 src=${2:?}
 work=${3:?}
 trials=${4:-3}
 seed=${5:-17}
+mode=${6:-stages}
 here="$src/tests/reliability"
-driver="$here/campaign_stages.lua"
-args=(--threads 2)
+case "$mode" in
+  stages)
+    driver="$here/campaign_stages.lua"
+    args=(--threads 2) ;;
+  calibration)
+    driver="$src/experiments/calibrate_paddy_mud.lua"
+    # The miniature configuration of tests/calibration/calibration_e2e.sh.
+    args=(--threads 2 --seed 3 --set "input=$src/tests/calibration/mini_mud.json" --set particle_diameter=0.04
+          --set rheometer_particle_diameter=0.02 --set threads_per_job=1
+          --set "experiment_params=max_time=1.5,settle_max_time=1.5"
+          --set "rheometer_params=speeds_rpm=10;20;40,step_time=0.1,settle_max_time=0.6,insert_time=0.02") ;;
+  *) echo "campaign_kill: unknown mode '$mode' (stages, calibration)" >&2; exit 2 ;;
+esac
 fail() { echo "campaign_kill: FAIL: $*" >&2; exit 1; }
 rm -rf "$work"
 mkdir -p "$work"
@@ -45,8 +63,15 @@ finished_sums() {
   for j in stage1.json summary.json result.json; do [ -f "$dir/$j" ] && md5sum "$dir/$j"; done
   true
 }
-# The phase the runner was in, from its last progress marker.
+# The phase the runner was in, from its last progress marker (calibration: its last numbered
+# step, "1. Plackett-Burman screening ...", or the surrogate strategy).
 phase_of() {
+  if [ "$mode" = calibration ]; then
+    local line
+    line=$(grep -E '^calibration: ([0-9]\. |Surrogate|report)' "$1" 2> /dev/null | tail -n 1 | cut -c14-40)
+    echo "${line:-start-up}"
+    return
+  fi
   case "$(tail -n 1 "$1" 2> /dev/null)" in
     "") echo "start-up" ;;
     "stage 1 submitted") echo "stage 1 jobs" ;;
@@ -110,8 +135,19 @@ for ((k = 0; k < trials; ++k)); do
   fi
   n_before=$(grep -c '/result.json$' "$out.before.md5" || true)
   # Same results as the uninterrupted run; every JSON parses.
-  "$paddy" run "$here/compare_runs.lua" --out "$out.check" --set "dir=$out" --set reference=whole > "$out.compare" 2>&1 \
-    || { cat "$out.compare" >&2; fail "trial $k: the result differs from the uninterrupted run"; }
+  if [ "$mode" = calibration ]; then
+    "$paddy" run "$src/tests/calibration/check_calibration.lua" --out "$out.check" --set "dir=$out" \
+      --set "same_as=whole/result.json" > "$out.compare" 2>&1 \
+      || { cat "$out.compare" >&2; fail "trial $k: the calibration's checks fail or its result differs from the uninterrupted run"; }
+    list=""
+    while IFS= read -r f; do list+="$f;"; done < <(find "$out" -name '*.json' -type f)
+    "$paddy" run "$here/check_json.lua" --out "$out.check_json" --set "files=$list" >> "$out.compare" 2>&1 \
+      || { cat "$out.compare" >&2; fail "trial $k: a JSON file does not parse"; }
+    echo "same result, $(find "$out/campaign/jobs" -name result.json | wc -l) jobs, every JSON parsed" >> "$out.compare"
+  else
+    "$paddy" run "$here/compare_runs.lua" --out "$out.check" --set "dir=$out" --set reference=whole > "$out.compare" 2>&1 \
+      || { cat "$out.compare" >&2; fail "trial $k: the result differs from the uninterrupted run"; }
+  fi
   # Every HDF5 file opens; the snapshots hold the uninterrupted run's data.
   while IFS= read -r f; do
     h5ls -r "$f" > /dev/null 2>&1 || fail "trial $k: $f does not open as HDF5"
@@ -127,7 +163,7 @@ done
 echo "campaign_kill: $killed of $trials trials killed with SIGKILL and completed with the uninterrupted result" \
      "($jobs_killed running jobs killed, $restarts restarts, $with_tmp kills while a temporary file existed," \
      "$stale_tmp stale temporaries left); $(elapsed "$start") s in all"
-for p in "start-up" "stage 1 jobs" "analysis between stages" "stage 2 jobs" "summary" "final result.json" "other"; do
-  [ -n "${phases[$p]:-}" ] && echo "  killed during $p: ${phases[$p]}"
+for p in "${!phases[@]}"; do
+  echo "  killed during $p: ${phases[$p]}"
 done
 [ "$killed" -ge 1 ] || fail "no trial was killed: the campaign is too short for this machine"

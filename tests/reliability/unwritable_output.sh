@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Output that cannot be written (docs/reliability.md, section 3): a file limit (`ulimit -f`, the
-# same failure as a full disk: EFBIG instead of ENOSPC), a read-only output directory and an
+# Output that cannot be written (docs/reliability.md, section 3): a file limit (`ulimit -f`: EFBIG;
+# a real full disk, ENOSPC, is full_disk.sh), a read-only output directory and an
 # output path whose parent is a regular file. Each run must exit non-zero (not be killed by
 # SIGXFSZ) with an error naming the file and the cause; earlier files stay byte-identical; no
 # file is left half-written under its real name (every JSON parses, every HDF5 file opens) and no
@@ -18,9 +18,8 @@ paddy=${1:?usage: unwritable_output.sh PADDY SOURCE_DIR WORK_DIR}
 src=${2:?}
 work=${3:?}
 here="$src/tests/reliability"
-script="$here/write_outputs.lua"
 limit_kb=64   # bash counts `ulimit -f` in 1024-byte blocks: the small outputs fit, the big ones do not
-fail() { echo "unwritable_output: FAIL: $*" >&2; exit 1; }
+test_name=unwritable_output
 
 immutable=""
 cleanup() { [ -z "$immutable" ] || chattr -R -i "$immutable" 2>/dev/null || true; }
@@ -29,51 +28,7 @@ trap cleanup EXIT
 rm -rf "$work"
 mkdir -p "$work"
 cd "$work"
-
-# Digests of every file under a directory (path and MD5), sorted.
-sums() { (cd "$1" && find . -type f -print0 | sort -z | xargs -0 -r md5sum); }
-# Every JSON file under $1 parses and every HDF5 file opens; no temporary file is left.
-intact() {
-  local dir=$1 list="" f
-  while IFS= read -r f; do list+="$f;"; done < <(find "$dir" -name '*.json' -type f)
-  if [ -n "$list" ]; then
-    "$paddy" run "$here/check_json.lua" --out "$work/check" --set "files=$list" > /dev/null 2> "$work/check.log" \
-      || { cat "$work/check.log" >&2; fail "$dir: a JSON file does not parse"; }
-  fi
-  while IFS= read -r f; do
-    h5ls -r "$f" > /dev/null 2>&1 || fail "$f does not open as HDF5"
-  done < <(find "$dir" -name '*.h5' -type f)
-  if [ -f "$dir/snapshots/particles.xmf" ]; then
-    for f in $(grep -o 'snap_[0-9]*\.h5' "$dir/snapshots/particles.xmf" | sort -u); do
-      [ -f "$dir/snapshots/$f" ] || fail "particles.xmf refers to the missing $f"
-    done
-  fi
-  local left
-  left=$(find "$dir" -name '*.tmp*')
-  [ -z "$left" ] || fail "temporary files left behind: $left"
-}
-# run NAME LIMIT_KB ARGS...: paddy run with an optional file limit; sets rc, output in NAME.err
-run() {
-  local name=$1 lim=$2
-  shift 2
-  rc=0
-  if [ "$lim" = none ]; then
-    "$paddy" run "$@" > "$name.out" 2> "$name.err" || rc=$?
-  else
-    (ulimit -f "$lim"; exec "$paddy" run "$@") > "$name.out" 2> "$name.err" || rc=$?
-  fi
-}
-# expect_failure NAME FILE CAUSE: the run failed by itself, naming FILE and CAUSE.
-expect_failure() {
-  local name=$1 file=$2 cause=$3
-  [ "$rc" -ne 0 ] || fail "$name: exit status 0 although $file could not be written"
-  [ "$rc" -lt 128 ] || fail "$name: paddy was killed by signal $((rc - 128)) instead of reporting the error"
-  local line
-  line=$(grep '^paddy: error' "$name.err" | grep -F -- "$file" | head -n 1 || true)
-  [[ "$line" == *"$file"* ]] || { cat "$name.err" >&2; fail "$name: the error does not name $file"; }
-  [[ "$line" == *"$cause"* ]] || { cat "$name.err" >&2; fail "$name: the error does not give the cause '$cause'"; }
-  echo "$name: exit $rc: ${line:0:220}"
-}
+source "$here/output_checks.sh"  # sums, intact, run, expect_failure, write_earlier, each_output_fails
 
 # 0. The limit is real: a program that does not ignore SIGXFSZ is killed by it.
 ( (ulimit -f "$limit_kb"; exec head -c 200000 /dev/zero > control.bin); echo $? > control.rc ) 2> /dev/null || true
@@ -82,30 +37,11 @@ rc=$(cat control.rc)
 echo "control: head past ulimit -f $limit_kb KiB killed by SIGXFSZ, as expected"
 
 # 1. An earlier run's outputs, all small.
-run earlier none "$script" --out earlier --threads 1 --set label=earlier
-[ "$rc" -eq 0 ] || { cat earlier.err >&2; fail "the earlier run failed"; }
-for f in result.json data.json table.csv state.h5 snapshots/snap_000000.h5 snapshots/particles.xmf; do
-  [ -s "earlier/$f" ] || fail "the earlier run did not write $f"
-done
+write_earlier
 
 # 2. ulimit -f: each output in turn too large, into a copy of the earlier directory.
-#    result.json and snapshots/ are cleared by design when a run starts (an earlier run's outcome
-#    or snapshot series must never pass for this run's); every other file must be untouched.
-for case in "snapshot snapshots/snap_000000.h5" "checkpoint state.h5" "json data.json" "csv table.csv" \
-            "result result.json"; do
-  set -- $case
-  what=$1 file=$2
-  rm -rf "d_$what"
-  cp -a earlier "d_$what"
-  sums "d_$what" | grep -v -e ' ./result.json$' -e ' ./snapshots/' > "before_$what.txt"
-  run "limit_$what" "$limit_kb" "$script" --out "d_$what" --threads 1 --set outputs="$what" --set big=1 --set label=later
-  expect_failure "limit_$what" "d_$what/$file" "File too large"
-  sums "d_$what" | grep -v -e ' ./result.json$' -e ' ./snapshots/' -e ' ./error.json$' > "after_$what.txt"
-  cmp -s "before_$what.txt" "after_$what.txt" || { diff "before_$what.txt" "after_$what.txt" >&2; fail "limit_$what: an earlier file changed"; }
-  [ ! -e "d_$what/result.json" ] || fail "limit_$what: a failed run left a result.json"
-  [ "$what" = result ] || grep -q 'File too large' "d_$what/error.json" || fail "limit_$what: error.json does not hold the error"
-  intact "d_$what"
-done
+copy_earlier() { rm -rf "$1"; cp -a earlier "$1"; }
+each_output_fails limit "$limit_kb" "File too large" copy_earlier
 
 # 3. The output directory's parent is a regular file.
 echo "not a directory" > plain_file

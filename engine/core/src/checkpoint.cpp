@@ -1,5 +1,7 @@
-// Checkpoint / restart in HDF5: every array of the state, including the neighbour list and the
-// contact history on its slots, so a restarted run continues bit for bit (same thread count).
+// Checkpoint in HDF5: every array of the state, including the neighbour list and the contact
+// history on its slots, so a restarted run continues bit for bit (same thread count). Reading it
+// back, with the checks of every dataset: checkpoint_load.cpp.
+#include "checkpoint_format.hpp"
 #include "simulation_impl.hpp"
 #include <paddy/io/h5_file.hpp>
 
@@ -11,17 +13,11 @@
 namespace paddy {
 
 namespace {
-constexpr int kCheckpointVersion = 2;  // 2: wall candidates refreshed apart from the list
 
 std::vector<double> flatten(const std::vector<Vec3>& v) {
   std::vector<double> out(v.size() * 3);
   for (std::size_t i = 0; i < v.size(); ++i)
     for (int c = 0; c < 3; ++c) out[3 * i + c] = v[i][c];
-  return out;
-}
-std::vector<Vec3> unflatten(const std::vector<double>& d) {
-  std::vector<Vec3> out(d.size() / 3);
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = Vec3(d[3 * i], d[3 * i + 1], d[3 * i + 2]);
   return out;
 }
 }  // namespace
@@ -93,87 +89,6 @@ void Simulation::saveCheckpoint(const std::string& path) const {
     std::filesystem::remove(tmp, ignored);
     throw std::runtime_error("cannot write checkpoint '" + path + "': renaming '" + tmp + "': " + ec.message());
   }
-}
-
-void Simulation::loadCheckpoint(const std::string& path) {
-  if (!std::filesystem::exists(path)) throw InputError("checkpoint '" + path + "' does not exist");
-  h5::File f = h5::File::open(path);
-  if (static_cast<int>(f.readAttr("version")) != kCheckpointVersion)
-    throw InputError("checkpoint '" + path + "' has an unsupported version");
-  if (static_cast<std::size_t>(f.readAttr("materials")) != materials_.size())
-    throw InputError("checkpoint '" + path + "' was written with " +
-                     std::to_string(static_cast<int>(f.readAttr("materials"))) +
-                     " materials; the script defines " + std::to_string(materials_.size()));
-  if (static_cast<std::size_t>(f.readAttr("history_stride")) != impl_->history_stride)
-    throw InputError("checkpoint '" + path + "' was written with other contact models (history size differs)");
-  time_ = f.readAttr("time");
-  dt_ = f.readAttr("dt");
-  impl_->dt_explicit = true;
-  steps_ = static_cast<std::uint64_t>(f.readAttr("steps"));
-  next_id_ = static_cast<std::uint64_t>(f.readAttr("next_id"));
-  list_builds_ = static_cast<std::size_t>(f.readAttr("list_builds"));
-  impl_->skin = f.readAttr("skin");
-  impl_->list_build_time = f.readAttr("list_build_time");
-  impl_->walls_refreshed = f.readAttr("walls_refreshed") != 0.0;
-  impl_->wall_refresh_time = f.readAttr("wall_refresh_time");
-  p_.id = f.read<std::uint64_t>("particles/id");
-  auto mat = f.read<std::int64_t>("particles/material");
-  p_.material.assign(mat.begin(), mat.end());
-  p_.radius = f.read<double>("particles/radius");
-  p_.mass = f.read<double>("particles/mass");
-  p_.inertia = f.read<double>("particles/inertia");
-  p_.position = unflatten(f.read<double>("particles/position"));
-  p_.velocity = unflatten(f.read<double>("particles/velocity"));
-  p_.omega = unflatten(f.read<double>("particles/omega"));
-  p_.force = unflatten(f.read<double>("particles/force"));
-  p_.torque = unflatten(f.read<double>("particles/torque"));
-  p_.resisting_torque = f.read<double>("particles/resisting_torque");
-  if (p_.resisting_torque.size() != p_.id.size()) throw InputError("checkpoint '" + path + "' is corrupt (resisting_torque)");
-  auto prev = f.read<std::uint64_t>("particles/prev_index");
-  impl_->prev_index.assign(prev.begin(), prev.end());
-  NeighbourList& l = impl_->list;
-  auto start = f.read<std::uint64_t>("list/start");
-  l.start.assign(start.begin(), start.end());
-  auto partner = f.read<std::uint64_t>("list/partner");
-  l.partner.assign(partner.begin(), partner.end());
-  l.partner_id = f.read<std::uint64_t>("list/partner_id");
-  l.range2 = f.read<double>("list/range2");
-  auto law = f.read<std::int64_t>("list/law");
-  l.law.assign(law.begin(), law.end());
-  l.history = f.read<double>("list/history");
-  auto live = f.read<std::uint64_t>("list/live");
-  l.live.assign(live.begin(), live.end());
-  l.x_at_build = unflatten(f.read<double>("list/x_at_build"));
-  impl_->x_at_wall_refresh.clear();
-  if (impl_->walls_refreshed) impl_->x_at_wall_refresh = unflatten(f.read<double>("walls/x_at_refresh"));
-  l.cell_size = f.readAttr("cell_size");
-  l.stride = impl_->history_stride;
-  for (int m : p_.material)
-    if (m < 0 || m >= static_cast<int>(materials_.size())) throw InputError("checkpoint '" + path + "' is corrupt (material id)");
-  for (auto lw : l.law)
-    if (lw < 0 || lw >= static_cast<int>(impl_->laws.size())) throw InputError("checkpoint '" + path + "' refers to a contact law the script does not define");
-  auto wid = f.read<std::uint64_t>("walls/particle_id");
-  auto wwall = f.read<std::uint64_t>("walls/wall");
-  auto wkey = f.read<std::uint64_t>("walls/key");
-  impl_->wall_state.resize(wid.size());
-  for (std::size_t k = 0; k < wid.size(); ++k)
-    impl_->wall_state[k] = {wid[k], static_cast<std::uint32_t>(wwall[k]), static_cast<std::uint32_t>(wkey[k])};
-  impl_->wall_history = f.read<double>("walls/history");
-  impl_->list_valid = f.readAttr("list_valid") != 0.0;
-  impl_->forces_valid = f.readAttr("forces_valid") != 0.0;
-  if (impl_->list_valid && !walls_.empty()) {
-    // Wall candidate lists are not stored: rebuild them exactly as they were built, from the
-    // positions and wall poses at their last refresh (the list build, or a refresh of the walls
-    // alone after it).
-    double rmax = 0.0, sep = 0.0;
-    for (double r : p_.radius) rmax = std::max(rmax, r);
-    for (const auto& lw : impl_->laws) sep = std::max(sep, lw.maxSeparation(rmax));
-    impl_->wall_max_gap = sep;
-    const bool refreshed = impl_->walls_refreshed;
-    for (auto& w : walls_) w->moveTo(refreshed ? impl_->wall_refresh_time : impl_->list_build_time);
-    impl_->buildWallCandidates(*this, refreshed ? impl_->x_at_wall_refresh : l.x_at_build);
-  }
-  for (auto& w : walls_) w->moveTo(time_);
 }
 
 }  // namespace paddy

@@ -19,6 +19,11 @@ void CellGrid::build(const std::vector<Vec3>& x, double cell_size) {
     hi = hi.cwiseMax(xi);
   }
   if (n == 0) lo = hi = Vec3::Zero();
+  // Positions spread beyond the largest double (e.g. from a hand-made checkpoint) would make the
+  // cell count below infinite for every cell size: the loop would never end.
+  if (!(hi - lo).allFinite())
+    throw InstabilityError("particle positions span more than the largest number (" + std::to_string(lo.minCoeff()) +
+                           " to " + std::to_string(hi.maxCoeff()) + " m): a particle has flown away");
   size = cell_size;
   // Keep the grid at most ~8 cells per particle even if a few particles fly far away.
   const double max_cells = std::max<double>(1000.0, 8.0 * static_cast<double>(n));

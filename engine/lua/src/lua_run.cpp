@@ -120,11 +120,19 @@ int run(lua_State* L) {
   if (ck_every && std::filesystem::exists(ck_path)) {
     // Resume: the checkpoint was written by this run of the same script (same set-up before it).
     const std::uint64_t first = sim.stepCount();
+    const double t_first = sim.time();
     sim.loadCheckpoint(ck_path.string());
     if (sim.stepCount() < first || sim.stepCount() - first > total)
       throw InputError("sim:run: checkpoint '" + ck_path.string() + "' is at step " + std::to_string(sim.stepCount()) +
                        ", outside this run (steps " + std::to_string(first) + " to " + std::to_string(first + total) +
                        "): it belongs to another run; remove it to start afresh");
+    if (sim.time() < t_first) {
+      std::ostringstream m;
+      m.precision(17);
+      m << "sim:run: checkpoint '" << ck_path.string() << "' is at t = " << sim.time() << " s, before this run's start (t = "
+        << t_first << " s): it belongs to another run; remove it to start afresh";
+      throw InputError(m.str());
+    }
     done = sim.stepCount() - first;
   }
   if (ck_path.has_parent_path()) std::filesystem::create_directories(ck_path.parent_path());

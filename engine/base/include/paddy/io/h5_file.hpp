@@ -93,17 +93,49 @@ class File {
     H5Pclose(lcpl);
   }
 
+  // Reads a dataset as write() wrote it: rank 1 when `columns` is 1, else rank 2 with that many
+  // columns, elements of T's kind (floating point or integer of T's sign) and size. Another
+  // shape or kind, or storage smaller than the data (a dataset declared large but never written,
+  // or compressed: write() does neither) is refused with an InputError naming the file and the
+  // dataset, before anything is allocated: a hostile file cannot make it allocate more than the
+  // file holds.
   template <class T>
-  std::vector<T> read(const std::string& name) const {
-    hid_t set = H5Dopen2(id_, name.c_str(), H5P_DEFAULT);
+  std::vector<T> read(const std::string& name, hsize_t columns = 1) const {
+    const std::string where = "HDF5 file '" + path_ + "': dataset '" + name + "'";
+    hid_t set = H5Lexists(id_, name.c_str(), H5P_DEFAULT) > 0 ? H5Dopen2(id_, name.c_str(), H5P_DEFAULT) : -1;
     if (set < 0) throw InputError("HDF5 file '" + path_ + "' has no dataset '" + name + "'");
-    hid_t space = H5Dget_space(set);
-    const hssize_t n = H5Sget_simple_extent_npoints(space);
-    std::vector<T> out(static_cast<std::size_t>(n));
-    herr_t st = n > 0 ? H5Dread(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) : 0;
-    H5Sclose(space);
+    const hid_t space = H5Dget_space(set), type = H5Dget_type(set);
+    std::string why;
+    hsize_t dims[2] = {0, 0};
+    const int rank = space < 0 ? -1 : H5Sget_simple_extent_ndims(space);
+    const H5T_class_t cls = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
+    const bool floating = std::is_floating_point_v<T>;
+    if (cls != (floating ? H5T_FLOAT : H5T_INTEGER) || H5Tget_size(type) != sizeof(T) ||
+        (!floating && H5Tget_sign(type) != (std::is_signed_v<T> ? H5T_SGN_2 : H5T_SGN_NONE)))
+      why = std::string(" does not hold ") + (floating ? "64-bit floating-point numbers"
+                                              : std::is_signed_v<T> ? "64-bit signed integers"
+                                                                    : "64-bit unsigned integers");
+    else if (H5Sget_simple_extent_type(space) != H5S_SIMPLE || rank != (columns == 1 ? 1 : 2))
+      why = " has " + std::to_string(rank < 0 ? 0 : rank) + " dimensions, expected " + (columns == 1 ? "1" : "2");
+    else if (H5Sget_simple_extent_dims(space, dims, nullptr) < 0 || (columns != 1 && dims[1] != columns))
+      why = " has " + std::to_string(dims[1]) + " columns, expected " + std::to_string(columns);
+    else if (dims[0] > (hsize_t{1} << 40) / columns)
+      why = " has " + std::to_string(dims[0]) + " rows, more than any file holds";
+    const hsize_t n = why.empty() ? dims[0] * columns : 0;
+    if (why.empty() && n > 0 && H5Dget_storage_size(set) < n * sizeof(T))
+      why = " declares " + std::to_string(n) + " values but stores " + std::to_string(H5Dget_storage_size(set)) +
+            " bytes (never written, truncated or compressed)";
+    std::vector<T> out;
+    herr_t st = 0;
+    if (why.empty()) {
+      out.resize(static_cast<std::size_t>(n));
+      st = n > 0 ? H5Dread(set, nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) : 0;
+      if (st < 0) why = " cannot be read" + systemCause();
+    }
+    if (type >= 0) H5Tclose(type);
+    if (space >= 0) H5Sclose(space);
     H5Dclose(set);
-    if (st < 0) throw InputError("cannot read dataset '" + name + "' from '" + path_ + "'");
+    if (!why.empty()) throw InputError(where + why);
     return out;
   }
 
@@ -136,12 +168,20 @@ class File {
     }
     H5Tclose(type);
   }
+  // A number stored as a scalar attribute of the root (integer or floating point); anything else
+  // (missing, text, an array, unreadable) is refused naming the file and the attribute.
   double readAttr(const std::string& name) const {
-    hid_t attr = H5Aopen(id_, name.c_str(), H5P_DEFAULT);
+    hid_t attr = H5Aexists(id_, name.c_str()) > 0 ? H5Aopen(id_, name.c_str(), H5P_DEFAULT) : -1;
     if (attr < 0) throw InputError("HDF5 file '" + path_ + "' has no attribute '" + name + "'");
+    const hid_t space = H5Aget_space(attr), type = H5Aget_type(attr);
+    const H5T_class_t cls = type < 0 ? H5T_NO_CLASS : H5Tget_class(type);
     double v = 0.0;
-    H5Aread(attr, H5T_NATIVE_DOUBLE, &v);
+    const bool number = (cls == H5T_INTEGER || cls == H5T_FLOAT) && space >= 0 &&
+                        H5Sget_simple_extent_npoints(space) == 1 && H5Aread(attr, H5T_NATIVE_DOUBLE, &v) >= 0;
+    if (type >= 0) H5Tclose(type);
+    if (space >= 0) H5Sclose(space);
     H5Aclose(attr);
+    if (!number) throw InputError("HDF5 file '" + path_ + "': attribute '" + name + "' is not a single number");
     return v;
   }
 
