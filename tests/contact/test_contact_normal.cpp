@@ -9,7 +9,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <cstdio>
+#include <vector>
 
 using namespace ctest;
 using paddy::contact::HertzMindlinDamping;
@@ -210,6 +212,53 @@ TEST_CASE("contact jkr: a(delta) satisfies delta(a) to 1e-10 from delta_c to lar
     }
   }
   std::printf("[contact] jkr a(delta): worst residual |delta(a) - delta| / scale = %.2e\n", worst);
+}
+
+TEST_CASE("contact jkr: solveScaled is the root of t^4 - 2t = d to rounding over the whole range", "[contact][jkr]") {
+  // Reference: bisection in long double on [t_min, max(2, 2 |d|^(1/4))], where t⁴ − 2t − d is increasing.
+  const long double t_min_l = 1.0L / std::cbrt(2.0L);
+  auto reference = [&](double d) {
+    const long double dl = d;
+    long double lo = t_min_l, hi = std::max(2.0L, 2.0L * std::sqrt(std::sqrt(std::fabs(dl))));
+    for (int i = 0; i < 200; ++i) {
+      const long double mid = 0.5L * (lo + hi);
+      if (mid == lo || mid == hi) break;
+      (mid * mid * mid * mid - 2.0L * mid - dl > 0.0L ? hi : lo) = mid;
+    }
+    return 0.5L * (lo + hi);
+  };
+  const double d_min = JkrNormal::minimumOverlapScaled();
+  std::vector<double> ds;
+  for (int k = 1; k <= 16; ++k) ds.push_back(d_min + std::pow(10.0, -k));  // approach to the branch point
+  for (int i = 0; i <= 200000; ++i) ds.push_back(d_min + (10.0 - d_min) * i / 200000.0);  // dense where contacts live
+  for (double e = 1.0; e <= 150.0; e += 0.01) ds.push_back(std::pow(10.0, e));        // large d, up to 1e150
+  double worst_root = 0.0, worst_old = 0.0, worst_res = 0.0;
+  for (const double d : ds) {
+    const double t = JkrNormal::solveScaled(d);
+    const long double r = reference(d);
+    const double x = d - d_min;
+    // Allow for the conditioning of the root: the rounding of d moves it by |d| / (t (4t³ − 2)) relative,
+    // which grows without bound at the branch point t_min.
+    const long double tol_rel = 4e-16L * (1.0L + std::fabs(d) / (r * (4.0L * r * r * r - 2.0L) + 1e-300L));
+    const long double err = std::fabs(t - r) / r;
+    worst_root = std::max(worst_root, double(err / tol_rel));
+    REQUIRE(err <= tol_rel);
+    // Residual, relative to the size of its terms.
+    const long double tl = t;
+    const long double res = std::fabs(tl * tl * tl * tl - 2.0L * tl - d) / (tl * tl * tl * tl + 2.0L * tl + std::fabs(d));
+    worst_res = std::max(worst_res, double(res));
+    if (x > 1e-6) {
+      REQUIRE(res <= 4e-16L);
+      const double old = JkrNormal::solveScaledIterative(d);
+      worst_old = std::max(worst_old, std::fabs(t - old) / old / double(tol_rel));
+      INFO("d = " << d << " t = " << t << " old = " << old << " ref = " << double(r));
+      REQUIRE(std::fabs(t - old) <= 2.0 * double(tol_rel) * old);  // both within the conditioning
+    }
+  }
+  CHECK(JkrNormal::solveScaled(d_min) == Approx(double(t_min_l)).epsilon(1e-15));
+  CHECK(JkrNormal::solveScaled(d_min - 1.0) == Approx(double(t_min_l)).epsilon(1e-15));
+  std::printf("jkr solveScaled over %zu values of d: worst |t - t_ref| / tol %.3g, worst relative residual %.3g, "
+              "worst |t - t_old| / t / tol %.3g\n", ds.size(), worst_root, worst_res, worst_old);
 }
 
 TEST_CASE("contact jkr: characteristic points of the force curve", "[contact][jkr]") {

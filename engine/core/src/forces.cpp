@@ -115,10 +115,15 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
           Tq[w.j[m]] += a.torque_j;
           Rs[w.j[m]] += b.resist_j[m];
         }
-        const double ratio = b.overlap[m] / std::min(b.radius_i[m], b.radius_j[m]);
-        if (ratio > tb.max_overlap_ratio) {
-          tb.max_overlap_ratio = ratio;
-          tb.worst = {p.id[i], is_wall ? static_cast<std::uint64_t>(wall_of_found[w.j[m]]) : p.id[w.j[m]], is_wall};
+        // Largest overlap / smaller radius: the division only for a candidate (the pre-test is
+        // looser than the exact comparison by far more than its rounding).
+        const double r_min = std::min(b.radius_i[m], b.radius_j[m]);
+        if (b.overlap[m] > tb.max_overlap_ratio * r_min * (1.0 - 1e-12)) {
+          const double ratio = b.overlap[m] / r_min;
+          if (ratio > tb.max_overlap_ratio) {
+            tb.max_overlap_ratio = ratio;
+            tb.worst = {p.id[i], is_wall ? static_cast<std::uint64_t>(wall_of_found[w.j[m]]) : p.id[w.j[m]], is_wall};
+          }
         }
         if (b.active[m]) ++tb.active_contacts;
         if (dry) {
@@ -143,7 +148,17 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     };
 
     // ---- particle–particle ----------------------------------------------------------------
-    const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
+    // Owners split so that each thread gets about the same number of list slots (the half list
+    // puts more slots on some owners than on others: an even split by particle count leaves one
+    // thread waiting for the other).
+    const auto owner_split = [&](int u) -> std::size_t {
+      if (u <= 0) return 0;
+      if (u >= nt) return n;
+      const std::size_t target = list.start[n] / static_cast<std::size_t>(nt) * static_cast<std::size_t>(u);
+      return static_cast<std::size_t>(std::lower_bound(list.start.begin(), list.start.begin() + static_cast<std::ptrdiff_t>(n), target) -
+                                      list.start.begin());
+    };
+    const std::size_t lo = owner_split(t), hi = owner_split(t + 1);
     for (std::size_t i = lo; i < hi; ++i) {
       const Vec3 xi = p.position[i];
       const double ri = p.radius[i];
