@@ -101,6 +101,12 @@ elseif(CASE STREQUAL "slump_observables")
   expect_number(${fpeak} GREATER ${fmean} "peak downward force above its mean")
   expect_number(${fpeak} GREATER 0 "peak downward pull of the mud on the cone [N]")
   expect_number(${mass} GREATER -0.000001 "mass on the cone [g]")
+  # Paddy's conventions (the default): the poured fill settles as a random packing, not a crystal.
+  result_of(out packing packing)
+  result_of(out cryst fill_structure crystalline)
+  if(NOT packing STREQUAL "poured" OR NOT cryst STREQUAL "OFF")
+    message(FATAL_ERROR "default fill: packing ${packing}, crystalline ${cryst} (expected poured, not crystalline)")
+  endif()
 
 elseif(CASE STREQUAL "blind_tiny" OR CASE STREQUAL "blind_full")
   if(CASE STREQUAL "blind_tiny")

@@ -123,14 +123,23 @@ elseif(CASE STREQUAL "slump_mini")
   endforeach()
   expect_number(${slump} GREATER 20 "slump_mm")
   expect_number(${slump} LESS 300 "slump_mm")
-  # The poured fill (lib/pour.lua): fills the cone to the rim as a random packing, not a crystal.
+  # The poured fill (lib/pour.lua) fills the cone to the rim. Under the edem conventions' explicit
+  # rolling torque it may settle into a crystal (docs/validation.md §1.1 item 4: the torque stirs
+  # the fill); the run must then say so. That the poured fill is random under Paddy's conventions
+  # is asserted by discovery.slump_observables.
   result(packing packing)
   result(cryst fill_structure crystalline)
   result(phi fill_solid_fraction)
   result(hopper hopper_height_m)
   result(spread0 history 1 slump_flow_mm)
-  if(NOT packing STREQUAL "poured" OR NOT cryst STREQUAL "OFF")
-    message(FATAL_ERROR "default fill: packing ${packing}, crystalline ${cryst} (expected poured, not crystalline)")
+  if(NOT packing STREQUAL "poured")
+    message(FATAL_ERROR "default fill: packing ${packing} (expected poured)")
+  endif()
+  if(cryst STREQUAL "ON" AND NOT LAST_STDERR MATCHES "warning: slump: the fill is crystalline")
+    message(FATAL_ERROR "a crystalline fill without the warning:\n${LAST_STDERR}")
+  endif()
+  if(cryst STREQUAL "OFF" AND LAST_STDERR MATCHES "the fill is crystalline")
+    message(FATAL_ERROR "the crystalline warning for a fill that is not:\n${LAST_STDERR}")
   endif()
   expect_number(${phi} GREATER 0.4 "fill_solid_fraction")
   expect_number(${phi} LESS 0.64 "fill_solid_fraction")
