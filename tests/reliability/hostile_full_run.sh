@@ -43,18 +43,16 @@ no_canary() {
 small=(--threads 2 --seed 3 --set particle_diameter=0.04 --set "experiment_params=max_time=1.5,settle_max_time=1.5")
 
 # 1. Hostile names are refused before anything runs.
-rc=0
-"$paddy" run "$src/experiments/calibrate_paddy_mud.lua" "${small[@]}" --set "input=$inputs/calibration_bad_name.json" \
-  --out "$work/refused_cal" > refused_cal.log 2>&1 || rc=$?
-[ "$rc" -eq 2 ] || { cat refused_cal.log >&2; fail "a calibration input with a hostile response name: exit $rc, not 2"; }
-grep -qF "$inputs/calibration_bad_name.json" refused_cal.log || { cat refused_cal.log >&2; fail "the refusal does not name the file"; }
-[ ! -d "$work/refused_cal/campaign" ] || fail "a simulation was started for a refused calibration input"
-rc=0
-"$paddy" run "$src/experiments/discover.lua" "${small[@]}" --set "input=$inputs/discovery_bad_name.json" \
-  --out "$work/refused_disc" > refused_disc.log 2>&1 || rc=$?
-[ "$rc" -eq 2 ] || { cat refused_disc.log >&2; fail "a discovery input with a hostile experiment name: exit $rc, not 2"; }
-grep -qF "$inputs/discovery_bad_name.json" refused_disc.log || { cat refused_disc.log >&2; fail "the refusal does not name the file"; }
-[ ! -d "$work/refused_disc/campaign" ] || fail "a simulation was started for a refused discovery input"
+# expect_refused SCRIPT INPUT OUT WHAT: exit 2 naming INPUT, and no campaign started.
+expect_refused() {
+  local rc=0
+  "$paddy" run "$src/experiments/$1" "${small[@]}" --set "input=$inputs/$2" --out "$work/$3" > "$3.log" 2>&1 || rc=$?
+  [ "$rc" -eq 2 ] || { cat "$3.log" >&2; fail "$4: exit $rc, not 2"; }
+  grep -qF "$inputs/$2" "$3.log" || { cat "$3.log" >&2; fail "the refusal does not name the file"; }
+  [ ! -d "$work/$3/campaign" ] || fail "a simulation was started for a refused input ($4)"
+}
+expect_refused calibrate_paddy_mud.lua calibration_bad_name.json refused_cal "a calibration input with a hostile response name"
+expect_refused discover.lua discovery_bad_name.json refused_disc "a discovery input with a hostile experiment name"
 rm -rf "$work/refused_cal" "$work/refused_disc"
 no_canary "refused inputs"
 echo "hostile names: both inputs refused (exit 2), naming the file, before any simulation"
