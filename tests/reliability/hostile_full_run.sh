@@ -15,15 +15,7 @@
 #     (quotes, $(...), backticks, non-ASCII) appears as given.
 #   hostile_full_run.sh PADDY SOURCE_DIR WORK_DIR
 set -euo pipefail
-paddy=${1:?usage: hostile_full_run.sh PADDY SOURCE_DIR WORK_DIR}
-src=${2:?}
-work=${3:?}
-fail() { echo "hostile_full_run: FAIL: $*" >&2; exit 1; }
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-work=$(pwd)
-canary="$work/CANARY"
+source "$(dirname "$0")/hostile_setup.sh"  # paddy, src, work (entered), fail, canary
 name="'\$(touch CANARY)' \`touch CANARY\` \"q\"; é <b>&amp;"
 inputs="$work/inputs $name"
 cal_out="$work/calibration $name"
@@ -76,14 +68,8 @@ cmp -s before.txt after.txt || { diff before.txt after.txt >&2; fail "files were
 description=$(cat "$inputs/description.txt")
 for out in "$cal_out" "$disc_out"; do
   page="$out/report.html"
-  xmllint --noout "$page" || fail "$page is not well-formed"
-  n=0
-  while IFS= read -r img; do
-    img=$(printf '%s' "$img" | sed 's/&amp;/\&/g; s/&lt;/</g; s/&gt;/>/g; s/&quot;/"/g; s/&#39;/'"'"'/g')
-    [ -s "$out/$img" ] || fail "$page: image $img is missing"
-    n=$((n + 1))
-  done < <(grep -o '<img src="[^"]*"' "$page" | sed 's/^<img src="//; s/"$//')
-  [ "$n" -ge 1 ] || fail "$page shows no image"
+  check_page "$out" report.html
+  [ "$images" -ge 1 ] || fail "$page shows no image"
   grep -qF '&lt;script&gt;alert(1)&lt;/script&gt;' "$page" || fail "$page: the description's markup does not appear escaped"
   ! grep -qF '<script>' "$page" || fail "$page: a <script> tag came from the text"
   ! grep -qiE '<[^>]* on(mouseover|click)=' "$page" || fail "$page: an attribute came from the text"
@@ -92,7 +78,7 @@ for out in "$cal_out" "$disc_out"; do
   for part in "\$(touch $canary)" "\`touch $canary\`" "a'; touch $canary; echo '" "../../../etc/passwd" "é ñ 日本"; do
     [[ "$unescaped" == *"$part"* ]] || fail "$page: the description's text '$part' does not appear as given"
   done
-  echo "$page: well-formed, $n images, the hostile text escaped"
+  echo "$page: well-formed, $images images, the hostile text escaped"
 done
 [[ "$description" == hostile:* ]] || fail "description.txt does not hold the description"
 echo "hostile_full_run: ok"

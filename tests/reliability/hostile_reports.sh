@@ -7,15 +7,7 @@
 # created) and nothing was written outside the output directory.
 #   hostile_reports.sh PADDY SOURCE_DIR WORK_DIR
 set -euo pipefail
-paddy=${1:?usage: hostile_reports.sh PADDY SOURCE_DIR WORK_DIR}
-src=${2:?}
-work=${3:?}
-fail() { echo "hostile_reports: FAIL: $*" >&2; exit 1; }
-rm -rf "$work"
-mkdir -p "$work"
-cd "$work"
-work=$(pwd)
-canary="$work/CANARY"
+source "$(dirname "$0")/hostile_setup.sh"  # paddy, src, work (entered), fail, canary
 # (a command in the name would run in the working directory, $work: `touch CANARY` makes $canary)
 out="$work/out '\$(touch CANARY)' \`touch CANARY\` \"q\" é <b>&amp;"
 outside() { find "$work" -path "$out" -prune -o -print | sort; }
@@ -29,13 +21,7 @@ grep -v -e '/run.log$' -e '/after.txt$' before.txt | cmp -s - after.txt \
 [ ! -e "$canary" ] || fail "a command ran: $canary exists"
 [ -z "$(find / -xdev -maxdepth 1 -name CANARY 2> /dev/null)" ] || fail "a command ran: /CANARY exists"
 for page in calibration_report.html discovery_report.html; do
-  xmllint --noout "$out/$page" || fail "$page is not well-formed"
-  n=0
-  while IFS= read -r img; do
-    img=$(printf '%s' "$img" | sed 's/&amp;/\&/g; s/&lt;/</g; s/&gt;/>/g; s/&quot;/"/g; s/&#39;/'"'"'/g')
-    [ -s "$out/$img" ] || fail "$page: image $img is missing"
-    n=$((n + 1))
-  done < <(grep -o '<img src="[^"]*"' "$out/$page" | sed 's/^<img src="//; s/"$//')
-  echo "$page: well-formed, $n images present"
+  check_page "$out" "$page"
+  echo "$page: well-formed, $images images present"
 done
 echo "hostile_reports: ok"
