@@ -61,7 +61,8 @@ class JkrNormal final : public SubModel {
   // A start within 8 % of the root, two Halley steps (cubic convergence: error below 2e-9) and one
   // Newton step (below 1e-16): a fixed chain of three divisions, no convergence test. Near the
   // branch point t_min the root itself is ill-conditioned (dt/dd ~ (d − d_min)^(−1/2)); there the
-  // result is as good as the rounding of d allows. Valid up to d ~ 1e150 (g g1 overflows far beyond).
+  // result is as good as the rounding of the quartic's terms t⁴, 2t, d allows. Valid up to d ~ 1e150
+  // (g g1 overflows far beyond).
   static double solveScaled(double d) {
     constexpr double t_min = 0.79370052598409973738;  // 2^(−1/3)
     const double d_min = minimumOverlapScaled();
