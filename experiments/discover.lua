@@ -359,7 +359,7 @@ for k, c in ipairs(cands) do
     end
   end
   signatures[c.name] = g
-  dcands[k] = {name = c.name, signature = g, low = c.low, high = c.high}
+  dcands[k] = {name = c.name, signature = g, low = c.low, high = c.high, relevant = c.relevant}
 end
 -- The decision's thresholds: bootstrap null trials of the fitted noise model (Sigma re-estimated
 -- from S.replicates draws in every trial), or the chi^2 tables. n_avg: seeds behind a simulated value.

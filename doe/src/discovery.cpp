@@ -37,6 +37,9 @@ void checkInput(const DiagnoseInput& in) {
     if (!c.signature.allFinite()) throw DoeError(where + ": signature has a non-finite value");
     if (std::isnan(c.low) || std::isnan(c.high) || !(c.low <= c.high))
       throw DoeError(where + ": need low <= high, got [" + std::to_string(c.low) + ", " + std::to_string(c.high) + "]");
+    if (!(std::isfinite(c.relevant) && c.relevant >= c.low && (c.relevant < c.high || (c.relevant == 0 && c.high == 0))))
+      throw DoeError(where + ": relevant = " + std::to_string(c.relevant) + " must lie in [low, high) = [" + std::to_string(c.low) +
+                     ", " + std::to_string(c.high) + ")");
     if (c.priorSd && !(*c.priorSd > 0 && std::isfinite(*c.priorSd)))
       throw DoeError(where + ": prior_sd must be finite and > 0");
   }
@@ -159,6 +162,8 @@ Diagnosis diagnose(const DiagnoseInput& in) {
       rep.identifiable = false;
       rep.notIdentifiableReason = "no sensitivity in [low, high]";
     }
+    rep.zRelevant = c.relevant == 0.0 ? rep.score.z : rep.score.z - c.relevant * std::sqrt(rep.score.a);
+    rep.pRelevant = c.relevant == 0.0 ? rep.score.p : boost::math::cdf(boost::math::complement(boost::math::normal(), rep.zRelevant));
     rep.score_rank = rep.score.logBayesFactor ? *rep.score.logBayesFactor : 0.5 * rep.score.z * std::abs(rep.score.z);
     d.candidates.push_back(rep);
   }
@@ -168,7 +173,7 @@ Diagnosis diagnose(const DiagnoseInput& in) {
   std::vector<std::size_t> member;
   for (std::size_t k = 0; k < d.candidates.size(); ++k)
     if (d.candidates[k].identifiable) {
-      family.push_back(d.candidates[k].score.p);
+      family.push_back(d.candidates[k].pRelevant);
       member.push_back(k);
     }
   const auto adj = holmAdjust(family);
@@ -178,7 +183,7 @@ Diagnosis diagnose(const DiagnoseInput& in) {
   const double zHalf = boost::math::quantile(boost::math::complement(boost::math::normal(), o.alpha / 2));
   for (auto& c : d.candidates) {
     if (!c.identifiable) continue;
-    c.passes = o.zThreshold ? c.score.z > *o.zThreshold : c.pHolm < o.alpha;
+    c.passes = o.zThreshold ? c.zRelevant > *o.zThreshold : c.pHolm < o.alpha;
     const auto& cand = *std::find_if(in.candidates.begin(), in.candidates.end(), [&](const Candidate& x) { return x.name == c.name; });
     c.plausible = c.passes && c.score.strength + zHalf * c.score.strengthSe >= cand.low &&
                   c.score.strength - zHalf * c.score.strengthSe <= cand.high;

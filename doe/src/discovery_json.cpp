@@ -160,6 +160,7 @@ DiagnoseInput diagnoseInputFromJson(const json& o) {
     cand.low = bound(c, "low", 0.0, where);
     cand.high = bound(c, "high", std::numeric_limits<double>::infinity(), where);
     if (c.contains("prior_sd") && !c["prior_sd"].is_null()) cand.priorSd = number(c["prior_sd"], where + ".prior_sd");
+    if (c.contains("relevant") && !c["relevant"].is_null()) cand.relevant = number(c["relevant"], where + ".relevant");
     in.candidates.push_back(cand);
   }
   if (o.contains("labels") && !o["labels"].is_null()) in.labels = names(o["labels"], "labels");
@@ -208,7 +209,7 @@ json diagnosisToJson(const Diagnosis& d) {
   j["candidates"] = json::array();
   for (const auto& c : d.candidates) {
     const auto& s = c.score;
-    json jc{{"name", c.name}, {"a", s.a}, {"b", s.b}, {"z", s.z}, {"p", s.p}, {"p_holm", c.pHolm},
+    json jc{{"name", c.name}, {"a", s.a}, {"b", s.b}, {"z", s.z}, {"p", s.p}, {"z_relevant", c.zRelevant}, {"p_relevant", c.pRelevant}, {"p_holm", c.pHolm},
             {"strength", s.strength}, {"strength_se", finiteOrNull(s.strengthSe)}, {"q_after", s.qAfter},
             {"q_after_p", s.qAfterP}, {"absorbed_fraction", s.absorbedFraction}, {"identifiable", c.identifiable},
             {"passes", c.passes}, {"plausible", c.plausible}};

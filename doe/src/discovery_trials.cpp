@@ -161,6 +161,9 @@ TrialCounts runTrials(const TrialModel& model, const TrialScenario& sc, int tria
   else if (sc.truth == "outside") c.expected = c.unknown;
   // A confusable pair: ambiguous listing the truth; with a finite strong margin also the truth named
   // on strong evidence (both right; never the rival alone).
+  // Below the truth's smallest relevant strength (candidate.relevant): the right answer is not to name it.
+  else if (truthIndex >= 0 && sc.size <= model.candidates[static_cast<std::size_t>(truthIndex)].relevant * model.projectedNorm(truthIndex))
+    c.expected = c.trials - c.correct - c.wrongName;
   else if (confusablePair) c.expected = c.ambiguousWithTruth + (std::isfinite(options.strongMargin) ? c.correct : 0);
   else c.expected = c.correct;
   return c;

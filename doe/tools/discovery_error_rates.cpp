@@ -13,6 +13,9 @@
 // DIR/discovery_bootstrap_rates.csv and .json.
 //   --strong-margin M  runs the rule with that strong margin (discovery.hpp; default infinite: a
 // confusable rival always makes the answer ambiguous) and writes ..._strong<M>.csv and .json.
+//   --relevant D  gives every candidate a smallest relevant strength of standardised size D
+// (Candidate::relevant = D / sqrt(a_k)), adds the truths A at D/2 and at D (expected: not named) to
+// the bootstrap scenarios and writes ..._relevant<D>.csv and .json.
 #include "paddy/doe/csv.hpp"
 #include "paddy/doe/discovery_trials.hpp"
 #include "paddy/doe/error.hpp"
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
     std::uint64_t seed = 1;
     std::string out;
     DecisionOptions base;  // the rule's options of every trial (thresholds added per mode)
+    double relevant = 0.0;  // standardised smallest relevant strength of every candidate
     for (int i = 1; i < argc; ++i) {
       const std::string a = argv[i];
       auto next = [&]() -> std::string {
@@ -66,12 +70,20 @@ int main(int argc, char** argv) {
       else if (a == "--seed") seed = static_cast<std::uint64_t>(intArg(next(), a));
       else if (a == "--out") out = next();
       else if (a == "--strong-margin") base.strongMargin = std::stod(next());
-      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --bootstrap B --seed S --strong-margin M --out DIR)");
+      else if (a == "--relevant") {
+        const std::string v = next();
+        std::size_t pos = 0;
+        try { relevant = std::stod(v, &pos); } catch (...) { pos = 0; }
+        if (pos != v.size() || !(relevant > 0 && relevant < 10)) throw DoeError("--relevant: '" + v + "' must be a number in (0, 10) (standardised size)");
+      }
+      else throw DoeError("unknown argument '" + a + "' (use --trials N --calibration N --bootstrap B --seed S --strong-margin M --relevant D --out DIR)");
     }
     if (out.empty()) throw DoeError("--out DIR is required");
     if (!(base.strongMargin >= base.bayesMargin)) throw DoeError("--strong-margin: must be >= " + fmt::format("{:g}", base.bayesMargin));
-    const std::string suffix = std::isfinite(base.strongMargin) ? fmt::format("_strong{:g}", base.strongMargin) : "";
-    const TrialModel model = syntheticTrialModel();
+    const std::string suffix = (std::isfinite(base.strongMargin) ? fmt::format("_strong{:g}", base.strongMargin) : "") +
+                               (relevant > 0 ? fmt::format("_relevant{:g}", relevant) : "");
+    TrialModel model = syntheticTrialModel();
+    for (std::size_t k = 0; k < model.candidates.size(); ++k) model.candidates[k].relevant = relevant / model.projectedNorm(static_cast<Eigen::Index>(k));
     const std::vector<NoiseSetting> noises{{"gaussian", NoiseKind::Gaussian, 0},
                                            {"t5", NoiseKind::StudentT5, 0},
                                            {"skewed", NoiseKind::Skewed, 0},
@@ -84,6 +96,7 @@ int main(int argc, char** argv) {
     doc["calibration_trials"] = calibration;
     doc["seed"] = seed;
     if (std::isfinite(base.strongMargin)) doc["strong_margin"] = base.strongMargin;
+    if (relevant > 0) doc["relevant_standardised"] = relevant;
     doc["model"] = {{"observables", model.jacobian.rows()}, {"parameters", model.jacobian.cols()}, {"candidates", {"A", "B", "C", "D"}}};
     {
       DiagnoseInput probe;
@@ -124,12 +137,16 @@ int main(int argc, char** argv) {
     };
     if (bootstrap > 0) {
       doc["bootstrap_trials"] = bootstrap;
-      const std::vector<TrialScenario> scenarios{{"none", 0.0, NoiseKind::Gaussian, 8, bootstrap},
+      std::vector<TrialScenario> scenarios{{"none", 0.0, NoiseKind::Gaussian, 8, bootstrap},
                                                  {"A", 4.0, NoiseKind::Gaussian, 8, bootstrap},
                                                  {"A", 6.0, NoiseKind::Gaussian, 8, bootstrap},
                                                  {"A", 8.0, NoiseKind::Gaussian, 8, bootstrap},
                                                  {"C", 6.0, NoiseKind::Gaussian, 8, bootstrap},
                                                  {"outside", 8.0, NoiseKind::Gaussian, 8, bootstrap}};
+      if (relevant > 0) {
+        scenarios.insert(scenarios.begin() + 1, {"A", relevant, NoiseKind::Gaussian, 8, bootstrap});
+        scenarios.insert(scenarios.begin() + 1, {"A", relevant / 2, NoiseKind::Gaussian, 8, bootstrap});
+      }
       for (const auto& sc : scenarios) {
         record("gaussian_sigma_from_8_replicates", "bootstrap", sc, runTrials(model, sc, trials, ++scenarioSeed, base));
         std::cerr << "done bootstrap " << sc.truth << " " << sc.size << "\n";

@@ -29,6 +29,8 @@ local P = paddy.parameters{
    description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
   {name = "lift_speeds", default = "", description = "lift speeds of the slump experiments, comma-separated m/s ('' = the variant's: full 0.1,0.4; tiny and small 0.3)"},
   {name = "cone_scales", default = "", description = "sizes of the slump cone as factors of the standard one (100/200/300 mm), comma-separated: one slump experiment per size and lift speed ('' = the standard cone only); a larger cone loads the mud more, which load-dependent effects feel and surface forces do not"},
+  {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
+   description = "each candidate's smallest relevant strength as a fraction of its range (its input key 'relevant'; docs/discovery.md, \"Decision\"): a weaker effect is not named. Hidden strengths are drawn from 0.15 of the range up; 0 = any strength counts"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
@@ -225,8 +227,13 @@ for i, t in ipairs(trials) do
     end
     exps[j] = {name = e.name, script = e.script, set = e.set, measured = measured, sigma = sigma}
   end
+  local cands = {}
+  for n, c in ipairs(set.candidates) do
+    cands[n] = {name = c.name, parameter = c.parameter, low = c.low, high = c.high}
+    if P.relevant_fraction > 0 then cands[n].relevant = P.relevant_fraction * c.high end
+  end
   local input = {description = string.format("blind trial %d", t.no), experiments = exps, free_parameters = free,
-                 candidates = set.candidates, settings = settings}
+                 candidates = cands, settings = settings}
   -- The file name carries a digest of the content: the workflow's job key holds the input's path,
   -- so a changed input (other noise, observables, settings) is a new job, never a stale result.
   local tmp = paddy.write_json(string.format("inputs/trial_%04d.tmp.json", t.no), input)

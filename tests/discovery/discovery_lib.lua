@@ -124,5 +124,10 @@ t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
       and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4, "defaults of the start scan, step control, specimen scatter, resolution and strong margin")
 t = good(); t.candidates = {}; bad(t, "'candidates' must be a non%-empty list")
+t = good(); t.candidates[1].relevant = 0.3; bad(t, "candidates%[1%]%.relevant = 0%.3 must be below high = 0%.3")
+t = good(); t.candidates[1].relevant = -0.01; bad(t, "candidates%[1%]%.relevant = %-0%.01 is outside the allowed range %[0, 0%.3%]")
+t = good(); t.candidates[1].relevant = 0.03
+check(input.read(paddy.write_json(dir .. "/relevant_input.json", t)).candidates[1].relevant == 0.03 and g.candidates[1].relevant == nil,
+      "relevant is read, and absent by default")
 
 paddy.result{ok = true}

@@ -60,6 +60,12 @@ elseif(CASE STREQUAL "input_errors")
   if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "cone_scales = 1,2.5: each scale must be in \\[0.5, 2\\]")
     message(FATAL_ERROR "cone scale out of range: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
+  # The smallest relevant strength must stay below the weakest hidden strength (0.15 of the range).
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out blind --threads 1
+            --set small=true --set relevant_fraction=0.2)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "parameter 'relevant_fraction' = 0.2 is outside the allowed range \\[0, 0.14\\]")
+    message(FATAL_ERROR "relevant fraction out of range: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
 
 elseif(CASE STREQUAL "slump_observables")
   # ~400 spheres of 25 mm, a fast lift. A broken sampler fails: wrong lengths (grids must not depend

@@ -38,6 +38,14 @@ TEST_CASE("discovery/lua: the workflow's API", "[doe][discovery]") {
     assert(d.decision == "effect" and d.named == "wall_adhesion", d.decision)
     assert(#d.whitened_residual == 3 and #d.projected_residual == 3 and #d.confusability == 1)
     assert(d.residual_map[3].label == "torque")
+    assert(c.z_relevant == c.z and c.p_relevant == c.p)
+    -- a smallest relevant strength of 4: lambda^ = 4.5 is not far enough above it to name the effect,
+    -- and the misfit (Q0 = 14 on 2 df) stays significant: unknown
+    local dr = doe.diagnose{residual = {1, 2, 6}, sigma = {1, 1, 1}, jacobian = {{1}, {1}, {1}},
+                            candidates = {{name = "wall_adhesion", signature = {0, 0, 1}, low = 0, high = 10, relevant = 4}}}
+    local cr = dr.candidates[1]
+    assert(math.abs(cr.z_relevant - 0.5 * math.sqrt(2/3)) < 1e-12 and cr.z == c.z, cr.z_relevant)
+    assert(cr.passes == false and dr.decision == "unknown", dr.decision)
     assert(math.abs(d.misfit - math.sqrt(41/3)) < 1e-12)
     -- no free parameters (empty Jacobian table)
     local d0 = doe.diagnose{residual = {0.1, -0.2, 0.3}, sigma = {1, 1, 1}, jacobian = {}, candidates = {}}

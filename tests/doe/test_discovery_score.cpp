@@ -274,6 +274,49 @@ TEST_CASE("discovery: a strength outside the physical range is not named", "[doe
   CHECK(d.decision == "unknown");
 }
 
+TEST_CASE("discovery: a smallest relevant strength tests lambda <= relevant", "[doe][discovery]") {
+  LinearModel lm;
+  const Eigen::VectorXd gA = gaussian(lm.rng, lm.m), gB = gaussian(lm.rng, lm.m);
+  const Eigen::VectorXd noise = gaussian(lm.rng, lm.m), shift = lm.J * gaussian(lm.rng, 3);
+  auto run = [&](double lambda, double relevant) {
+    DiagnoseInput in = lm.input(Eigen::VectorXd::Zero(lm.m));
+    in.residual = lambda * gA + noise + shift;  // the same noise for every call
+    in.candidates = {lm.candidate("A", gA, 5.0), lm.candidate("B", gB, 5.0)};
+    in.candidates[0].relevant = relevant;
+    return diagnose(in);
+  };
+  // A present but weak effect (projected size ~ 0.8 |P gA| ~ 4 noise sd) is named when any
+  // strength counts, and not when strengths below 0.7 do not matter.
+  const Diagnosis any = run(0.8, 0.0), relevant = run(0.8, 0.7);
+  CHECK(any.decision == "effect");
+  CHECK(any.named == "A");
+  const auto& a0 = report(any, "A");
+  const auto& a1 = report(relevant, "A");
+  CHECK(a0.zRelevant == a0.score.z);  // relevant = 0: exactly today's test
+  CHECK(a0.pRelevant == a0.score.p);
+  CHECK(a1.score.z == a0.score.z);    // the score itself does not change
+  CHECK(a1.zRelevant == Approx(a1.score.z - 0.7 * std::sqrt(a1.score.a)).epsilon(1e-12));
+  CHECK(a1.zRelevant == Approx((a1.score.strength - 0.7) / a1.score.strengthSe).epsilon(1e-9));
+  CHECK(a1.pRelevant == Approx(0.5 * std::erfc(a1.zRelevant / std::sqrt(2.0))).epsilon(1e-9));
+  CHECK_FALSE(a1.passes);
+  CHECK(relevant.decision != "effect");
+  CHECK(relevant.named.empty());
+  // B's test is unchanged by A's relevance
+  CHECK(report(relevant, "B").pRelevant == report(any, "B").score.p);
+  // A strong effect is still named, with the same strength estimate
+  const Diagnosis strong = run(3.0, 0.7);
+  CHECK(strong.decision == "effect");
+  CHECK(strong.named == "A");
+  CHECK(report(strong, "A").score.strength == report(run(3.0, 0.0), "A").score.strength);
+  // relevant must lie in [low, high)
+  DiagnoseInput bad = lm.input(Eigen::VectorXd::Zero(lm.m));
+  bad.candidates = {lm.candidate("A", gA, 5.0)};
+  bad.candidates[0].relevant = 5.0;
+  CHECK_THROWS_WITH(diagnose(bad), Catch::Contains("candidates[1] (A): relevant = 5") && Catch::Contains("must lie in [low, high)"));
+  bad.candidates[0].relevant = -0.1;
+  CHECK_THROWS_WITH(diagnose(bad), Catch::Contains("relevant = -0.1"));
+}
+
 TEST_CASE("discovery: input errors name the field", "[doe][discovery]") {
   LinearModel lm;
   DiagnoseInput in = lm.input(Eigen::VectorXd::Zero(lm.m));

@@ -30,7 +30,7 @@ end
 
 -- Returns {path, experiments = {{name, script, set, observables = {{key, measured = {..}, sigma = {..},
 -- vector}}}}, free_parameters = {{parameter, low, high, start}}, candidates = {{name, parameter, low,
--- high, probe}}, settings = {...}}.
+-- high, probe, relevant}}, settings = {...}}.
 function M.read(path)
   local ok, t = pcall(paddy.read_json, path)
   if not ok then error((tostring(t):gsub("^%s+", "")), 0) end
@@ -117,6 +117,11 @@ function M.read(path)
     strength(path, where, c, x)
     if x.low ~= 0 then fail(path, string.format("%s.low = %g: a candidate's strength starts at 0 (0 = today's model, effect off)", where, x.low)) end
     x.probe = c.probe and number(path, where .. ".probe", c.probe, 1e-300, x.high) or x.high / 2
+    -- relevant: the smallest strength that matters; a weaker effect is not named (docs/discovery.md, "Decision").
+    if c.relevant ~= nil then
+      x.relevant = number(path, where .. ".relevant", c.relevant, 0, x.high)
+      if x.relevant >= x.high then fail(path, string.format("%s.relevant = %g must be below high = %g", where, x.relevant, x.high)) end
+    end
     input.candidates[i] = x
   end
 

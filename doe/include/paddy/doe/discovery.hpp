@@ -11,8 +11,10 @@
 //     (|P g| < absorbed_tolerance |g|) or when even its largest physical strength moves the
 //     projected data by less than min_range_z noise standard deviations (high sqrt(a) < min_range_z);
 //     it is reported as such and never named, and never counts as evidence of absence.
-//  2. One family of hypotheses: the global misfit Q0 (chi^2(m - rank J)) and the score z_k of every
-//     identifiable candidate; Holm's step-down adjustment over these K+1 p-values (S. Holm, "A
+//  2. One family of hypotheses: the global misfit Q0 (chi^2(m - rank J)) and the score of every
+//     identifiable candidate, z_k, or z_k - relevant_k sqrt(a_k) when the candidate has a smallest
+//     relevant strength (a one-sided test of lambda_k <= relevant_k: at its boundary this statistic
+//     has the null distribution of z_k, so the tables and the bootstrap thresholds apply unchanged); Holm's step-down adjustment over these K+1 p-values (S. Holm, "A
 //     simple sequentially rejective multiple test procedure", Scand. J. Statist. 6, 65–70, 1979)
 //     keeps the probability of any alarm on data with nothing missing at most alpha. (Testing Q0
 //     at alpha and the z's by Holm at alpha separately would allow up to 2 alpha.)
@@ -55,6 +57,12 @@ struct Candidate {
   double low = 0.0;
   double high = std::numeric_limits<double>::infinity();
   std::optional<double> priorSd;  ///< tau; default high - low when finite
+  /// Smallest strength that matters (default 0). The candidate's test is then of lambda <= relevant
+  /// against lambda > relevant: z_relevant = (lambda^ - relevant) / se = z - relevant sqrt(a). An
+  /// effect the data show to be present but too weak to matter is not named; a small systematic
+  /// bias of the model (e.g. of its resolution) along the candidate's signature does not raise an
+  /// alarm. 0 gives the test of lambda = 0 exactly. Must lie in [low, high).
+  double relevant = 0.0;
 };
 
 struct DecisionOptions {
@@ -82,7 +90,9 @@ struct DiagnoseInput {
 struct CandidateReport {
   std::string name;
   CandidateScore score;
-  double pHolm = 1;         ///< Holm-adjusted p (1 when not identifiable or in empirical mode)
+  double zRelevant = 0;     ///< (lambda^ - relevant) / se = z - relevant sqrt(a); = z when relevant = 0
+  double pRelevant = 1;     ///< 1 - Phi(z_relevant), one-sided: the p-value of the candidate's test
+  double pHolm = 1;         ///< Holm-adjusted pRelevant (1 when not identifiable or in empirical mode)
   bool identifiable = true;
   std::string notIdentifiableReason;  ///< "absorbed by recalibration" / "no sensitivity in [low, high]"
   bool passes = false, plausible = false;

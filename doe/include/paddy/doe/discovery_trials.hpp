@@ -14,7 +14,9 @@
 // The standardised size of the effect is delta = lambda sqrt(a_truth) = the mean of z_truth (for
 // "outside": sqrt of the noncentrality of Q0). The expected decision is `none` on null data,
 // `effect` naming the truth for A or B, `ambiguous` listing the truth for C or D, `unknown` for
-// "outside"; an error is any `effect` that names a candidate other than the truth.
+// "outside"; an error is any `effect` that names a candidate other than the truth. A candidate with a
+// smallest relevant strength (Candidate::relevant; set it on the model's candidates) whose truth lies
+// at or below it is expected not to be named (any decision but `effect`).
 #pragma once
 #include "paddy/doe/discovery.hpp"
 
