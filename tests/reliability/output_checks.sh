@@ -55,6 +55,8 @@ expect_failure() {
   line=$(grep '^paddy: error' "$name.err" | grep -F -- "$file" | head -n 1 || true)
   [[ "$line" == *"$file"* ]] || { cat "$name.err" >&2; fail "$name: the error does not name $file"; }
   [[ "$line" == *"$cause"* ]] || { cat "$name.err" >&2; fail "$name: the error does not give the cause '$cause'"; }
+  # The user sees paddy's one error line, not HDF5's own dump of its error stack.
+  ! grep -q 'HDF5-DIAG' "$name.err" || { cat "$name.err" >&2; fail "$name: HDF5 printed its error stack"; }
   echo "$name: exit $rc: ${line:0:220}"
 }
 

@@ -6,12 +6,17 @@
 // reported the error. Paddy closes every file it opens itself, so the library is told not to
 // register that clean-up: a failed write then ends in the error message and the exit code, not
 // a crash. H5dont_atexit must run before the first HDF5 call, hence a static initialiser.
+//
+// HDF5 also prints its whole error stack to stderr on every failed call (dozens of lines for a
+// full disk). Paddy reports each failure itself, naming the file and the system's cause read from
+// that stack (h5::systemCause), so the automatic printing is switched off: the user sees one line.
 #include <hdf5.h>
 
 namespace {
 
 const bool kNoAtexit = [] {
   H5dont_atexit();
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
   return true;
 }();
 
