@@ -232,8 +232,14 @@ TEST_CASE("contact jkr: solveScaled is the root of t^4 - 2t = d to rounding over
   for (int k = 1; k <= 16; ++k) ds.push_back(d_min + std::pow(10.0, -k));  // approach to the branch point
   for (int i = 0; i <= 200000; ++i) ds.push_back(d_min + (10.0 - d_min) * i / 200000.0);  // dense where contacts live
   for (double e = 1.0; e <= 150.0; e += 0.01) ds.push_back(std::pow(10.0, e));        // large d, up to 1e150
-  double worst_root = 0.0, worst_old = 0.0, worst_res = 0.0;
-  for (const double d : ds) {
+  // The batch solver (the one the force loop uses) on the same values, in batches of every length
+  // from 1 to kCapacity in turn (a vector loop's tail is handled apart from its body).
+  std::vector<double> tb(ds.size());
+  for (std::size_t i = 0, len = 1; i < ds.size(); i += len, len = len % ContactBatch::kCapacity + 1)
+    JkrNormal::solveScaledBatch(ds.data() + i, tb.data() + i, std::min(len, ds.size() - i));
+  double worst_root = 0.0, worst_old = 0.0, worst_res = 0.0, worst_batch = 0.0;
+  for (std::size_t n = 0; n < ds.size(); ++n) {
+    const double d = ds[n];
     const double t = JkrNormal::solveScaled(d);
     const long double r = reference(d);
     const double x = d - d_min;
@@ -247,6 +253,10 @@ TEST_CASE("contact jkr: solveScaled is the root of t^4 - 2t = d to rounding over
     worst_root = std::max(worst_root, double(err / tol_rel));
     INFO("d = " << d << " t = " << t << " ref = " << double(r) << " err " << double(err) << " tol " << double(tol_rel));
     REQUIRE(err <= tol_rel);
+    const long double err_batch = std::fabs(tb[n] - r) / r;
+    worst_batch = std::max(worst_batch, double(err_batch / tol_rel));
+    INFO("batch: t = " << tb[n] << " err " << double(err_batch));
+    REQUIRE(err_batch <= tol_rel);
     // Residual, relative to the size of its terms.
     const long double tl = t;
     const long double res = std::fabs(tl * tl * tl * tl - 2.0L * tl - d) / (tl * tl * tl * tl + 2.0L * tl + std::fabs(d));
@@ -261,8 +271,12 @@ TEST_CASE("contact jkr: solveScaled is the root of t^4 - 2t = d to rounding over
   }
   CHECK(JkrNormal::solveScaled(d_min) == Approx(double(t_min_l)).epsilon(1e-15));
   CHECK(JkrNormal::solveScaled(d_min - 1.0) == Approx(double(t_min_l)).epsilon(1e-15));
-  std::printf("jkr solveScaled over %zu values of d: worst |t - t_ref| / tol %.3g, worst relative residual %.3g, "
-              "worst |t - t_old| / t / tol %.3g\n", ds.size(), worst_root, worst_res, worst_old);
+  const double below[3] = {d_min, d_min - 1.0, -1e300};
+  double t_below[3];
+  JkrNormal::solveScaledBatch(below, t_below, 3);
+  for (const double t : t_below) CHECK(t == Approx(double(t_min_l)).epsilon(1e-15));
+  std::printf("jkr solveScaled over %zu values of d: worst |t - t_ref| / tol %.3g (batch %.3g), worst relative residual %.3g, "
+              "worst |t - t_old| / t / tol %.3g\n", ds.size(), worst_root, worst_batch, worst_res, worst_old);
 }
 
 TEST_CASE("contact jkr: characteristic points of the force curve", "[contact][jkr]") {
