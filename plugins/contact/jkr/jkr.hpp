@@ -64,34 +64,19 @@ class JkrNormal final : public SubModel {
   // result is as good as the rounding of the quartic's terms t⁴, 2t, d allows. Valid up to d ~ 1e150
   // (g g1 overflows far beyond).
   static double solveScaled(double d) {
-    constexpr double t_min = 0.79370052598409973738;  // 2^(−1/3)
-    const double d_min = minimumOverlapScaled();
-    if (d <= d_min) return t_min;
     double t;
-    if (d < 0.0) {
-      // Branch point: t⁴ − 2t − d ≈ 6 t_min² (t − t_min)² − (d − d_min).
-      t = t_min + std::sqrt((d - d_min) * (1.0 / (6.0 * t_min * t_min)));
-    } else {
-      // One fixed-point step t ← (d + 2t)^{1/4} from an upper bound (t0³ ≥ 4, t0⁴ ≥ 2d).
-      const double t0 = std::max(1.5874010519681994, std::sqrt(std::sqrt(2.0 * d)));  // cbrt(4)
-      t = std::sqrt(std::sqrt(d + 2.0 * t0));
-    }
-    for (int it = 0; it < 2; ++it) {  // Halley
-      const double t2 = t * t, t3 = t2 * t;
-      const double g = t3 * t - 2.0 * t - d, g1 = 4.0 * t3 - 2.0, g2 = 12.0 * t2;
-      t -= g * g1 / (g1 * g1 - 0.5 * g * g2);
-    }
-    const double t3 = t * t * t;  // Newton
-    t -= (t3 * t - 2.0 * t - d) / (4.0 * t3 - 2.0);
-    return std::max(t, t_min);
+    solveScaledBatch(&d, &t, 1);
+    return t;
   }
 
-  // solveScaled for n values at once: the same start, the same two Halley and one Newton step,
-  // written branch-free (both starts computed, one selected) so that the compiler vectorises the
+  // solveScaled for n values at once. The starts: for d < 0 the branch-point expansion
+  // t⁴ − 2t − d ≈ 6 t_min² (t − t_min)² − (d − d_min); otherwise one fixed-point step
+  // t ← (d + 2t)^{1/4} from an upper bound (t0³ ≥ 4, t0⁴ ≥ 2d). Written branch-free (both starts
+  // computed, one selected) so that the compiler vectorises the
   // loop (-O3, and -fno-math-errno for this plugin, plugins/contact/CMakeLists.txt: std::sqrt may
   // then become one vector instruction): the scalar chain of square roots and divisions is
-  // latency-bound, the vector unit's lanes are not. The result may differ from solveScaled in the
-  // last bit (other contraction of products and sums); its accuracy is tested the same way.
+  // latency-bound, the vector unit's lanes are not. A batch's vector body and its scalar tail may
+  // differ in the last bit (other contraction of products and sums); both are tested.
   static void solveScaledBatch(const double* __restrict d_in, double* __restrict t_out, std::size_t n) {
     constexpr double t_min = 0.79370052598409973738;  // 2^(−1/3)
     constexpr double cbrt4 = 1.5874010519681994;
