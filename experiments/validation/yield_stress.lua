@@ -85,7 +85,17 @@ end
 -- The depth series: fill levels of the vane runs (false: one run at rheometer.lua's fill level, the
 -- job parameters and keys as before the series existed).
 local fill_levels = report.numbers(P.vane_fill_levels, "vane_fill_levels") or false
-local RHEOMETER_CUP_HEIGHT = 0.12  -- rheometer.lua's default cup_height
+-- rheometer.lua's default cup_height, read from its parameter table (no copy that could go stale).
+local function rheometer_default(name)
+  local path = dir .. "/../rheometer.lua"
+  local f = assert(io.open(path, "r"), "cannot read " .. path)
+  local text = f:read("a")
+  f:close()
+  local v = text:match('name = "' .. name .. '", default = ([%d%.eE+-]+)')
+  if not tonumber(v) then error(string.format("%s: no numeric default of parameter '%s' found", path, name), 0) end
+  return tonumber(v)
+end
+local RHEOMETER_CUP_HEIGHT = rheometer_default("cup_height")
 if fill_levels then
   if #fill_levels < 2 then error("vane_fill_levels: a depth series needs at least 2 fill levels, got " .. P.vane_fill_levels) end
   if rheo_extra.fill_level then error("rheometer_set must not set fill_level when vane_fill_levels is given") end
