@@ -18,7 +18,8 @@ function M.summary(o, files)
   local cands = {}
   for k, c in ipairs(o.input.candidates) do
     local s = find(d.candidates, c.name) or {}
-    cands[k] = {name = c.name, parameter = c.parameter, probe = c.probe, z = s.z, p = s.p, p_holm = s.p_holm,
+    cands[k] = {name = c.name, parameter = c.parameter, probe = c.probe, relevant = c.relevant, z = s.z, z_relevant = s.z_relevant,
+                p = s.p, p_relevant = s.p_relevant, p_holm = s.p_holm,
                 strength = s.strength, strength_se = s.strength_se, q_after = s.q_after, q_after_p = s.q_after_p,
                 bayes_factor = s.bayes_factor, identifiable = s.identifiable}
   end
@@ -230,11 +231,12 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
   rows = {}
   for _, c in ipairs(o.input.candidates) do
     local s = find(d.candidates, c.name) or {}
-    rows[#rows + 1] = {esc(c.name), esc(c.parameter), num(c.probe), num(s.z, 3), pval(s.p), pval(s.p_holm),
+    rows[#rows + 1] = {esc(c.name), esc(c.parameter), num(c.probe), num(c.relevant or 0), num(s.z, 3), num(s.z_relevant or s.z, 3),
+                       pval(s.p_relevant or s.p), pval(s.p_holm),
                        num(s.strength) .. " ± " .. num(s.strength_se, 3), num(s.q_after), pval(s.q_after_p), num(s.bayes_factor, 3),
                        s.identifiable == false and "no" or "yes"}
   end
-  add(table_html({"candidate", "parameter", "probe", "z", "p", "p (Holm)", "strength", "misfit left", "p", "Bayes factor", "identifiable"}, rows,
+  add(table_html({"candidate", "parameter", "probe", "smallest relevant", "z", "z above relevant", "p", "p (Holm)", "strength", "misfit left", "p", "Bayes factor", "identifiable"}, rows,
                  "Score test of each candidate on the residual that recalibration cannot absorb"))
   if d.confusability then
     local header, crow = {""}, {}
