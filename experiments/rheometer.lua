@@ -34,8 +34,8 @@ local chart = require("lib.chart")
 local measure = require("paddy.measure")
 
 local P = mud.resolve(paddy.parameters(mud.parameters{
-  {name = "particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.02,
-   description = "mean sphere diameter (reference 0.002; coarse grained above)"},
+  {name = "particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.04,
+   description = "mean sphere diameter (reference 0.002; coarse grained above); the gap between vane and cup must be at least one wide"},
   {name = "size_spread", default = 0.0, min = 0, max = 0.3, description = "relative std of the diameters (0: monodisperse)"},
   {name = "seed", default = 0, type = "integer", min = 0, max = 2147483647, description = "fill seed (0: --seed)"},
   {name = "packing", default = "poured", choices = {"poured", "lattice"},
@@ -84,6 +84,13 @@ local seed = P.seed > 0 and P.seed or paddy.seed
 local R_cup, R_vane = P.cup_diameter / 2, P.vane_diameter / 2
 local z_vane = P.vane_bottom
 if z_vane + P.vane_height > P.fill_level then error("the vane's blades must be below fill_level") end
+-- A sheared gap narrower than a sphere is no rheometer (the test runs use 20 mm spheres in the
+-- standard cup's 25 mm gap; the benchmarks' scaled vane has a gap of 3 spheres and more).
+if R_cup - R_vane < d then
+  error(string.format("particle_diameter = %g m: the gap between vane and cup, (cup_diameter - vane_diameter)/2 = %g m, "
+                      .. "must be at least one sphere wide: allowed particle_diameter <= %g m, or a larger cup_diameter", d, R_cup - R_vane,
+                      R_cup - R_vane), 0)
+end
 
 local cg = mud.coarse_grain(P, d)
 local sim = paddy.simulation{gravity = {0, 0, -9.81}, threads = paddy.threads}

@@ -15,6 +15,7 @@
 local util = require("lib.util")
 local stack = require("lib.discovery.stack")
 local score = require("lib.discovery.score")
+local bench = require("lib.discovery.benchmark")
 
 local P = paddy.parameters{
   {name = "tiny", default = false, description = "CI variant: 2 trials (a strong hidden candidate, a null), one slump experiment, very coarse spheres"},
@@ -29,6 +30,8 @@ local P = paddy.parameters{
    description = "stand_in: existing contact parameters as candidates; effects: the four effect plugins (liquid bridges, lubrication, wall adhesion, plastic adhesion)"},
   {name = "lift_speeds", default = "", description = "lift speeds of the slump experiments, comma-separated m/s ('' = the variant's: full 0.1,0.4; tiny and small 0.3)"},
   {name = "cone_scales", default = "", description = "sizes of the slump cone as factors of the standard one (100/200/300 mm), comma-separated: one slump experiment per size and lift speed ('' = the standard cone only); a larger cone loads the mud more, which load-dependent effects feel and surface forces do not"},
+  {name = "vane_scale", default = 0, min = 0, max = 8,
+   description = "add the vane rheometer scaled by this factor from the standard 100 mm cup (lib/discovery/benchmark.lua: start-up peak and two steady torques; 0 = none, else 1-8): a flowing strength beside the slump's static one"},
   {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
    description = "each candidate's smallest relevant strength as a fraction of its range (its input key 'relevant'; docs/discovery.md, \"Decision\"): a weaker effect is not named. Hidden strengths are drawn from 0.15 of the range up; 0 = any strength counts"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
@@ -43,39 +46,9 @@ local experiments_dir = here .. "/.."
 local workflow = P.workflow ~= "" and P.workflow or experiments_dir .. "/discover.lua"
 local function say(fmt, ...) io.stderr:write("blind: ", string.format(fmt, ...), "\n") end
 
--- The candidate lists. Each strength runs from 0 (off) to high; `outside` are effects the
--- workflow is not told about: a parameter moved from its default by a factor.
-local SETS = {
-  stand_in = {
-    candidates = {{name = "wall_friction", parameter = "mud_steel_friction", low = 0, high = 1.0},
-                  {name = "rolling_resistance", parameter = "mud_mud_rolling_friction", low = 0, high = 0.3}},
-    outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
-  },
-  effects = {
-    -- 2 mm values (mud.lua coarse grains them; docs/physics.md §2.7): bridge volume as a fraction
-    -- of the sphere volume; viscosity up to 0.02 Pa s (20 x water), where the film is still
-    -- resolved by the step; wall JKR energy up to 0.3 J/m^2; pull-off up to 0.1 of the largest load (0.05 already
-    -- lowers the 20 mm slump by 95 mm, 0.3 makes the pile stand).
-    candidates = {{name = "liquid_bridges", parameter = "liquid_bridge_volume", low = 0, high = 0.05},
-                  {name = "lubrication", parameter = "lubrication_viscosity", low = 0, high = 0.02},
-                  {name = "wall_adhesion", parameter = "mud_steel_surface_energy", low = 0, high = 0.3},
-                  {name = "plastic_adhesion", parameter = "plastic_adhesion", low = 0, high = 0.1}},
-    outside = {{parameter = "mud_mud_friction", default = 0.15, factor = {2.5, 4}}},
-  },
-}
-local set = SETS[P.candidate_set]
-local free = {{parameter = "jkr_surface_energy", low = 0.05, high = 0.3}}
+local set = bench.CANDIDATE_SETS[P.candidate_set]
+local free = bench.FREE
 
--- Experiments and observables with their measurement sd (abs in the key's unit, rel of the value:
--- sd = max(abs, rel |value|)).
--- The profile is the ring-mean height (profile_mean_mm): the median height of a ring (profile_mm)
--- jumps from 0 to a sphere's height as the pile's edge crosses it, a step no seed scatter of the
--- replicates measures.
-local OBS = {{key = "slump_mm", abs = 3}, {key = "slump_flow_mm", abs = 6}, {key = "profile_mean_mm", abs = 4},
-             {key = "history_mm", abs = 4}, {key = "cone_force_N.mean", abs = 0.3, rel = 0.1}}
-local common = {settle_max_time = 1.5, min_rest_time = 0.2, max_time = 4}
-local experiments = {{name = "slump_slow", script = "slump.lua", set = {lift_speed = 0.1}},
-                     {name = "slump_fast", script = "slump.lua", set = {lift_speed = 0.4}}}
 local n_effect, n_null, n_outside = P.effect_trials, P.null_trials, P.outside_trials
 local d_work, d_truth = P.particle_diameter, P.truth_diameter
 -- measured_repeats = 1: each measurement is one truth run, so it carries one seed's scatter on top
@@ -88,39 +61,13 @@ if P.tiny or P.small then
   if P.tiny then n_effect, n_null, n_outside = 1, 1, 0 end
   if d_work == 0.016 then d_work = 0.025 end
   if d_truth == 0.014 then d_truth = 0.023 end
-  experiments = {{name = "slump", script = "slump.lua", set = {lift_speed = 0.3}}}
   settings = {iterations = 5, replicates = 5, signature_seeds = 1, confirm_seeds = 2, measured_repeats = 1,
               resolution_factor = 0.9, resolution_seeds = 2}
 end
-if P.lift_speeds ~= "" then
-  experiments = {}
-  for _, v in ipairs(util.numbers(P.lift_speeds, "lift_speeds")) do
-    if v <= 0 or v > 2 then error(string.format("discovery_blind.lua: lift_speeds = %s: each speed must be in (0, 2] m/s", P.lift_speeds), 0) end
-    experiments[#experiments + 1] = {name = string.format("slump_%dmm_per_s", math.floor(v * 1000 + 0.5)), script = "slump.lua", set = {lift_speed = v}}  -- a plain name: no dot
-  end
-end
--- cone_scales: each experiment at each cone size (a scale other than 1 appends _cone<percent> to
--- its name and scales the cone's three dimensions).
-if P.cone_scales ~= "" then
-  local scales, sized = util.numbers(P.cone_scales, "cone_scales"), {}
-  for _, sc in ipairs(scales) do
-    if sc < 0.5 or sc > 2 then error(string.format("discovery_blind.lua: cone_scales = %s: each scale must be in [0.5, 2]", P.cone_scales), 0) end
-  end
-  for _, e in ipairs(experiments) do
-    for _, sc in ipairs(scales) do
-      local set = {}
-      for k, v in pairs(e.set) do set[k] = v end
-      local name = e.name
-      if sc ~= 1 then
-        name = string.format("%s_cone%d", e.name, math.floor(sc * 100 + 0.5))
-        set.cone_height, set.cone_top_diameter, set.cone_bottom_diameter = 0.3 * sc, 0.1 * sc, 0.2 * sc
-      end
-      sized[#sized + 1] = {name = name, script = e.script, set = set}
-    end
-  end
-  experiments = sized
-end
-for _, e in ipairs(experiments) do for k, v in pairs(common) do e.set[k] = v end end
+-- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
+-- every cone size, and the vane when vane_scale > 0.
+local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,
+                                      cone_scales = P.cone_scales, vane_scale = P.vane_scale}
 
 -- Trials in a fixed order, their truths drawn from their seeds.
 local trials = {}
@@ -215,11 +162,11 @@ for i, t in ipairs(trials) do
     local entry = entries[k]
     if entry.status ~= "done" then error(string.format("blind: truth simulation of trial %d (%s) failed: %s", t.no, e.name, tostring(entry.error)), 0) end
     local measured, sigma = {}, {}
-    for _, o in ipairs(OBS) do
+    for _, o in ipairs(e.observables) do
       local v = assert(stack.extract(entry.result, o.key))
       local mv, sv = {}, {}
       for n, x in ipairs(v) do
-        sv[n] = math.max(o.abs, (o.rel or 0) * math.abs(x))
+        sv[n] = bench.noise_sd(o, x)
         mv[n] = x + sv[n] * gauss()
       end
       if #v == 1 then mv, sv = mv[1], sv[1] end

@@ -60,6 +60,22 @@ elseif(CASE STREQUAL "input_errors")
   if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "cone_scales = 1,2.5: each scale must be in \\[0.5, 2\\]")
     message(FATAL_ERROR "cone scale out of range: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
+  # A vane scale between 0 (none) and 1 would put the benchmark's coarse spheres in a cup too small.
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out blind --threads 1
+            --set small=true --set vane_scale=0.5)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "vane_scale = 0.5: must be 0 \\(no vane\\) or in \\[1, 8\\]")
+    message(FATAL_ERROR "vane scale out of range: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_sensitivity.lua --out sens --threads 1
+            --set cone_scales=0.3)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "cone_scales = 0.3: each scale must be in \\[0.5, 2\\]")
+    message(FATAL_ERROR "sensitivity: cone scale out of range: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
+  # The rheometer refuses spheres wider than the gap between vane and cup, naming the largest allowed.
+  run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out rheo --threads 1 --set particle_diameter=0.03)
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "particle_diameter = 0.03 m: the gap between vane and cup, \\(cup_diameter - vane_diameter\\)/2 = 0.025 m, must be at least one sphere wide: allowed particle_diameter <= 0.025 m")
+    message(FATAL_ERROR "rheometer gap: exit ${code}, stderr: ${LAST_STDERR}")
+  endif()
   # The smallest relevant strength must stay below the weakest hidden strength (0.15 of the range).
   run_paddy(code se run ${SOURCE}/experiments/validation/discovery_blind.lua --out blind --threads 1
             --set small=true --set relevant_fraction=0.2)
@@ -113,6 +129,15 @@ elseif(CASE STREQUAL "slump_observables")
   if(NOT packing STREQUAL "poured" OR NOT cryst STREQUAL "OFF")
     message(FATAL_ERROR "default fill: packing ${packing}, crystalline ${cryst} (expected poured, not crystalline)")
   endif()
+
+elseif(CASE STREQUAL "sensitivity")
+  # The measured sensitivities at 40 mm (a few hundred spheres), one slump, 2 seeds: 12 runs.
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_sensitivity.lua --out out --threads 2
+            --set particle_diameter=0.04 --set seeds=2)
+  expect_code(${code} 0)
+  run_paddy(code se run ${HERE}/check_sensitivity.lua --out check --threads 1 --set dir=${WORK}/out)
+  expect_code(${code} 0)
+  result_of(check ok ok)
 
 elseif(CASE STREQUAL "blind_tiny" OR CASE STREQUAL "blind_full")
   if(CASE STREQUAL "blind_tiny")
