@@ -187,6 +187,38 @@ TEST_CASE("geometry sphere rolling over a sharp convex edge (vane blade tip) has
   CHECK(near_edge[0].normal.z() == Approx(1.0));
 }
 
+TEST_CASE("geometry a sphere beside a thin closed blade within a contact range: the blade's far side is no penetration") {
+  // The standard vane's blades are 2 mm thick. A sphere of radius 12.5 mm whose centre lies 16 mm
+  // beside blade 0 (along +x, faces y = +-1 mm; 20 mm from the axis, out of reach of the shaft and the other blades) with a contact range of 6 mm (a liquid bridge's
+  // rupture distance): the near face is 3.5 mm away (overlap -3.5 mm); the far face, 18 mm away,
+  // is also within reach, but the centre is outside the blade, so it is no contact at all (taken
+  // as a penetration it would be an overlap of r + 18 mm).
+  MeshWall vane("vane", 0, buildVane());
+  const double r = 0.0125, gap = 0.006;
+  for (double y : {0.017, -0.017}) {
+    const auto c = contactsAt(vane, Vec3(0.02, y, 0.03), r, gap);
+    INFO("y = " << y);
+    REQUIRE(c.size() == 1);
+    CHECK(c[0].overlap == Approx(r - 0.016).epsilon(1e-9));
+    CHECK(c[0].normal.y() == Approx(y > 0 ? 1.0 : -1.0));
+  }
+  // Past the blade tip, beside its corner: the closest feature is the tip edge; still one contact.
+  const double xo = std::sqrt(0.025 * 0.025 - 0.001 * 0.001);
+  const auto corner = contactsAt(vane, Vec3(xo + 0.003, 0.016, 0.03), r, gap);
+  REQUIRE(corner.size() == 1);
+  CHECK(corner[0].overlap == Approx(r - std::hypot(0.003, 0.015)).epsilon(1e-9));
+  // A sphere that does penetrate the blade (centre inside it, 0.6 mm below the +y face) keeps its
+  // contacts as penetrations: the +y face's with overlap r + 0.6 mm and none on the outside.
+  const auto inside = contactsAt(vane, Vec3(0.02, 0.0004, 0.03), r, gap);
+  REQUIRE_FALSE(inside.empty());
+  bool near_face = false;
+  for (const auto& x : inside) {
+    CHECK(x.overlap > r);
+    near_face = near_face || (std::abs(x.overlap - (r + 0.0006)) < 1e-9 && x.normal.y() == Approx(1.0));
+  }
+  CHECK(near_face);
+}
+
 TEST_CASE("geometry single-surface cone: contacts on both sides, key constant around the cone") {
   MeshWall cone("cone", 0, buildSlumpCone());
   CHECK(cone.regionCount() == 1);

@@ -30,6 +30,7 @@ struct MeshWall::Hit {
   double overlap = 0.0;  // radius − d (radius + d for a centre inside a solid)
   Vec3 q = Vec3::Zero(), n = Vec3::Zero();  // closest point, normal (wall → centre), body frame
   std::uint32_t key = 0;
+  bool behind = false;   // the sign test puts the centre inside the closed component (reduce)
 };
 
 // Uniform cell grid over the body-frame mesh in CSR form: the triangles of cell c are

@@ -5,6 +5,10 @@
 //     the centre of a closed component lies behind the angle-weighted pseudo-normal (Bærentzen &
 //     Aanæs 2005, mesh_wall_topology.cpp); a centre on the edge or vertex itself (d ≤ 1e-12 r)
 //     takes the pseudo-normal (closed) or the face normal, overlap r;
+//     the side of a closed surface the centre is on is that of its closest hit (inside or
+//     outside, by the sign test of 1.): hits of closed triangles that say the other side are
+//     dropped. A thin closed part (a 2 mm vane blade) within reach r + max_gap on both faces
+//     would otherwise give the far face as a penetration of r + d although the centre is outside;
 //  2. per smooth region, closest first: the closest hit is the region's contact (key = region
 //     id); a further hit starts a new contact (key = region_count + triangle) only if its normal
 //     differs from each of the region's contacts by more than cluster_angle_deg and it is a local
@@ -45,7 +49,7 @@ bool MeshWall::isLocalMinimum(const Hit& h, const Vec3& xb) const {
 void MeshWall::reduce(const Vec3& xb, double radius, std::uint32_t particle, std::vector<Hit>& hits,
                       std::vector<WallContact>& out) const {
   if (hits.empty()) return;
-  // Normals and overlaps.
+  // Normals and overlaps; h.behind: the sign test puts the centre inside a closed component.
   for (Hit& h : hits) {
     const Vec3 diff = xb - h.q;
     const Vec3& fn = tri_normal_[h.tri];
@@ -55,6 +59,7 @@ void MeshWall::reduce(const Vec3& xb, double radius, std::uint32_t particle, std
       if (closed) {
         h.n = fn;
         h.overlap = radius - s;
+        h.behind = s < 0.0;
       } else {
         h.n = s >= 0.0 ? fn : Vec3(-fn);
         h.overlap = radius - std::abs(s);
@@ -69,12 +74,27 @@ void MeshWall::reduce(const Vec3& xb, double radius, std::uint32_t particle, std
         if (closed && diff.dot(pseudo) < 0.0) {
           h.n = -h.n;
           h.overlap = radius + h.d;
+          h.behind = true;
         }
       } else {
         h.n = closed && pseudo.norm() > 0.0 ? Vec3(pseudo.normalized()) : fn;
         h.overlap = radius;
       }
     }
+  }
+  // The side of the closed surface: that of the closest closed hit (the smaller triangle on a tie).
+  std::size_t closest = hits.size();
+  for (std::size_t i = 0; i < hits.size(); ++i) {
+    if (tri_closed_[hits[i].tri] == 0) continue;
+    if (closest == hits.size() || hits[i].d < hits[closest].d || (hits[i].d == hits[closest].d && hits[i].tri < hits[closest].tri))
+      closest = i;
+  }
+  if (closest < hits.size()) {
+    const bool side = hits[closest].behind;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < hits.size(); ++i)
+      if (tri_closed_[hits[i].tri] == 0 || hits[i].behind == side) hits[n++] = hits[i];
+    hits.resize(n);
   }
   std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
     return a.region < b.region || (a.region == b.region && (a.d < b.d || (a.d == b.d && a.tri < b.tri)));
