@@ -121,6 +121,28 @@ TEST_CASE("campaign: a failing job is retried once, then reported failed", "[cam
   fs::remove_all(dir);
 }
 
+TEST_CASE("campaign: an attempt starts without the temporaries a killed attempt left", "[campaign]") {
+  const fs::path dir = tempDir("leftovers");
+  std::ostringstream log;
+  Campaign c(options(dir, 1, &log));
+  const auto key = c.submit(fakeJob("left", 0.0));
+  const fs::path jd = c.jobDir(key);
+  // What a process killed in the middle of its atomic writes leaves (<file>.tmp.<pid>), and a
+  // stale error.json; beside them files of the job that are not temporaries.
+  fs::create_directories(jd / "snapshots");
+  for (const fs::path& p : {jd / "result.json.tmp.4242", jd / "snapshots" / "snap_000003.h5.tmp.17", jd / "error.json",
+                           jd / "notes.tmp.txt", jd / "snapshots" / "keep.tmp."})
+    std::ofstream(p) << "partial";
+  c.runAll();
+  REQUIRE(c.status(key) == JobStatus::Done);
+  CHECK_FALSE(fs::exists(jd / "result.json.tmp.4242"));
+  CHECK_FALSE(fs::exists(jd / "snapshots" / "snap_000003.h5.tmp.17"));
+  CHECK_FALSE(fs::exists(jd / "error.json"));
+  CHECK(fs::exists(jd / "notes.tmp.txt"));         // not of the form <name>.tmp.<digits>
+  CHECK(fs::exists(jd / "snapshots" / "keep.tmp."));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("campaign: a job whose command cannot start is reported failed", "[campaign]") {
   const fs::path dir = tempDir("nostart");
   std::ostringstream log;

@@ -33,6 +33,32 @@ TEST_CASE("io: atomic write replaces the file and leaves no temporary", "[io]") 
   fs::remove_all(dir);
 }
 
+TEST_CASE("io: the temporaries of interrupted atomic writes are recognised and removed", "[io]") {
+  using paddy::io::isTemporaryName;
+  CHECK(isTemporaryName("result.json.tmp.4242"));
+  CHECK(isTemporaryName("snap_000001.h5.tmp.7"));
+  CHECK(isTemporaryName("a.tmp.1.tmp.22"));
+  CHECK_FALSE(isTemporaryName("result.json"));
+  CHECK_FALSE(isTemporaryName("notes.tmp.txt"));
+  CHECK_FALSE(isTemporaryName("x.tmp."));
+  CHECK_FALSE(isTemporaryName(".tmp.12"));
+  CHECK_FALSE(isTemporaryName("x.tmp.12a"));
+
+  const fs::path dir = fs::temp_directory_path() / ("paddy_io_tmps_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  CHECK(paddy::io::removeTemporaries(dir) == 0);  // no directory: nothing
+  fs::create_directories(dir / "a" / "b");
+  for (const fs::path& p : {dir / "r.json.tmp.1", dir / "a" / "b" / "s.h5.tmp.99", dir / "r.json", dir / "a" / "t.tmp.x"})
+    std::ofstream(p) << "x";
+  // A temporary the writer itself produced and lost (its process killed) is removed like these.
+  CHECK(paddy::io::removeTemporaries(dir) == 2);
+  CHECK_FALSE(fs::exists(dir / "r.json.tmp.1"));
+  CHECK_FALSE(fs::exists(dir / "a" / "b" / "s.h5.tmp.99"));
+  CHECK(fs::exists(dir / "r.json"));
+  CHECK(fs::exists(dir / "a" / "t.tmp.x"));
+  fs::remove_all(dir);
+}
+
 TEST_CASE("io: progress line shows time, percentage, rate and ETA", "[io]") {
   const std::string line = paddy::io::ProgressLine::format(0.25, 1.0, 0.25, 1.5e6, 75);
   CHECK_THAT(line, Catch::Contains("0.25 / 1 s") && Catch::Contains("25.0 %") && Catch::Contains("1.50M") &&

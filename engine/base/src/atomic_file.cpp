@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <system_error>
+#include <vector>
 
 namespace paddy::io {
 
@@ -80,6 +81,31 @@ void writeFileAtomic(const fs::path& path, std::string_view content) {
     }
     if (::close(fd) != 0) fail("write", path, tmp, errno);
   });
+}
+
+bool isTemporaryName(std::string_view filename) {
+  constexpr std::string_view marker = ".tmp.";
+  const auto at = filename.rfind(marker);
+  if (at == std::string_view::npos || at == 0) return false;
+  const std::string_view pid = filename.substr(at + marker.size());
+  if (pid.empty()) return false;
+  for (char ch : pid)
+    if (ch < '0' || ch > '9') return false;
+  return true;
+}
+
+std::size_t removeTemporaries(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return 0;
+  std::vector<fs::path> found;
+  for (fs::recursive_directory_iterator it(dir, fs::directory_options::skip_permission_denied, ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (it->is_regular_file(ec) && isTemporaryName(it->path().filename().string())) found.push_back(it->path());
+  }
+  std::size_t removed = 0;
+  for (const auto& p : found)
+    if (fs::remove(p, ec)) ++removed;
+  return removed;
 }
 
 }  // namespace paddy::io

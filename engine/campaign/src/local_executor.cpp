@@ -185,8 +185,7 @@ void runLocal(RunContext& ctx, SignalGuard& signals) {
       queue.pop_front();
       const int threads = threadsFor(ctx, job);
       const int attempt = ++job.attempts;
-      std::error_code ec;
-      fs::remove(job.dir / "error.json", ec);  // an error.json must belong to this attempt
+      clearAttemptLeftovers(job);
       std::string error;
       pid_t pid = -1;
       try {

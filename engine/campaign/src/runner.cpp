@@ -111,6 +111,12 @@ void clearFailedRecord(const JobRecord& job) {
   fs::remove(job.dir / "failed.json", ec);
 }
 
+void clearAttemptLeftovers(const JobRecord& job) {
+  std::error_code ec;
+  fs::remove(job.dir / "error.json", ec);  // an error.json must belong to this attempt
+  io::removeTemporaries(job.dir);
+}
+
 void keepAttemptLogs(const JobRecord& job, int attempt) {
   std::error_code ec;
   for (const char* name : {"stdout.log", "stderr.log", "error.json"}) {

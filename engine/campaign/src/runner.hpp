@@ -40,6 +40,11 @@ void writeFailedRecord(const JobRecord& job);
 void clearFailedRecord(const JobRecord& job);
 // Moves stdout.log/stderr.log of a failed attempt aside (attempt<N>.stdout.log ...).
 void keepAttemptLogs(const JobRecord& job, int attempt);
+// Before an attempt starts: removes what an earlier attempt, or a killed campaign's job, left in
+// the job directory that must not be taken for this attempt's: error.json and the temporaries of
+// interrupted atomic writes ("<file>.tmp.<pid>", paddy/io/atomic_file.hpp). No process writes to
+// the directory then (the job is not running anywhere).
+void clearAttemptLeftovers(const JobRecord& job);
 
 // "a b 'c d'" for messages and batch scripts (POSIX shell single quoting).
 std::string shellQuote(const std::string& arg);

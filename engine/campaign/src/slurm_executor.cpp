@@ -193,6 +193,7 @@ void runSlurm(RunContext& ctx, SignalGuard& signals) {
     for (JobRecord* job : batch) {
       ++job->attempts;
       job->status = JobStatus::Queued;
+      clearAttemptLeftovers(*job);
     }
     const fs::path script = writeBatchScript(ctx, batch, number);
     const std::string id = submitArray(ctx, script, batch.size(), number);

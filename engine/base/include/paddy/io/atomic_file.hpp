@@ -2,6 +2,7 @@
 // target, so a reader (or a crash) never sees a half-written file.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <string_view>
@@ -16,5 +17,14 @@ void writeFileAtomic(const std::filesystem::path& path, std::string_view content
 // Used for files written by libraries that want a path (HDF5).
 void produceFileAtomic(const std::filesystem::path& path,
                        const std::function<void(const std::filesystem::path&)>& write);
+
+// True for a name of the form "<name>.tmp.<digits>": a temporary of the writers above.
+bool isTemporaryName(std::string_view filename);
+
+// Removes every temporary ("<name>.tmp.<pid>") under `dir`, recursively, and returns how many.
+// For a directory no process writes to at the moment: a campaign job's directory before its next
+// attempt starts, where the temporaries are what an earlier, killed attempt left behind. A
+// missing directory removes nothing.
+std::size_t removeTemporaries(const std::filesystem::path& dir);
 
 }  // namespace paddy::io
