@@ -39,6 +39,7 @@ local P = paddy.parameters{
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
   {name = "report_pictures", default = false, description = "each trial's report.html with its figures (gnuplot; the CI variant checks them in a browser, tests/clients)"},
   {name = "code_version", default = "", description = "fixed code version for the job keys ('' = hash of the binaries)"},
+  {name = "progress_of", default = "", description = "output directory of a benchmark started with the same settings (and code_version): summarise its trials finished so far into this run's --out, running nothing"},
 }
 
 local here = (debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$")) or "."
@@ -121,12 +122,27 @@ local function draw_truth(t)
   return truth
 end
 
-local campaign_dir = util.absolute(util.out("campaign"))
+-- progress_of: the same job keys in another benchmark's directory, read and not run (its inputs
+-- and truths are not written again: the digest of an input's text gives its path there).
+local partial = P.progress_of ~= ""
+local base = partial and util.absolute(P.progress_of) or nil
+local function bench_path(name) return partial and (base .. "/" .. name) or util.out(name) end
+local campaign_dir = util.absolute(bench_path("campaign"))
 local sims = paddy.campaign{dir = campaign_dir, executor = "local", code_version = P.code_version ~= "" and P.code_version or nil}
-local flows = paddy.campaign{dir = util.out("trials"), executor = "local", max_parallel = 1,
+local flows = paddy.campaign{dir = bench_path("trials"), executor = "local", max_parallel = 1,
                              code_version = P.code_version ~= "" and P.code_version or nil}
 util.mkdir(util.out("truth"))
 util.mkdir(util.out("inputs"))
+-- The jobs' entries as campaign:run gives them; with progress_of only those finished, others pending.
+local function entries_of(c, ks)
+  if not partial then return c:run(ks) end
+  local out = {}
+  for i, key in ipairs(ks) do
+    local st = c:status(key)
+    out[i] = {status = st == "done" and "done" or "pending", result = st == "done" and c:result(key) or nil}
+  end
+  return out
+end
 
 -- FNV-1a, 32 bits (Fowler, Noll, Vo): a short digest of a text.
 local function fnv1a(text)
@@ -148,7 +164,7 @@ for i, t in ipairs(trials) do
 end
 say("%d trials (%d effect, %d null, %d outside), workflow at %.0f mm, truth at %.0f mm: %d truth simulations",
     #trials, P.tiny and 1 or n_effect, n_null, n_outside, d_work * 1000, d_truth * 1000, #keys)
-local entries = sims:run(keys)
+local entries = entries_of(sims, keys)
 
 -- 2. Input files with noisy measurements; truths sealed apart.
 local k = 0
@@ -156,10 +172,12 @@ local flow_keys = {}
 for i, t in ipairs(trials) do
   math.randomseed(t.seed + 1)
   local function gauss() return math.sqrt(-2 * math.log(1 - math.random())) * math.cos(2 * math.pi * math.random()) end
-  local exps = {}
+  local exps, pending = {}, false
   for j, e in ipairs(experiments) do
     k = k + 1
     local entry = entries[k]
+    pending = pending or entry.status == "pending"
+    if pending then goto next_experiment end
     if entry.status ~= "done" then error(string.format("blind: truth simulation of trial %d (%s) failed: %s", t.no, e.name, tostring(entry.error)), 0) end
     local measured, sigma = {}, {}
     for _, o in ipairs(e.observables) do
@@ -173,7 +191,10 @@ for i, t in ipairs(trials) do
       measured[o.key], sigma[o.key] = mv, sv
     end
     exps[j] = {name = e.name, script = e.script, set = e.set, measured = measured, sigma = sigma}
+    ::next_experiment::
   end
+  if pending then goto next_trial end
+  do
   local cands = {}
   for n, c in ipairs(set.candidates) do
     cands[n] = {name = c.name, parameter = c.parameter, low = c.low, high = c.high}
@@ -188,17 +209,29 @@ for i, t in ipairs(trials) do
   local text = f:read("a")
   f:close()
   os.remove(tmp)
-  local path = paddy.write_json(string.format("inputs/trial_%04d_%08x.json", t.no, fnv1a(text)), input)
-  paddy.write_json(string.format("truth/trial_%04d.json", t.no), truths[i])
+  local name = string.format("inputs/trial_%04d_%08x.json", t.no, fnv1a(text))
+  local path = partial and bench_path(name) or paddy.write_json(name, input)
+  if not partial then paddy.write_json(string.format("truth/trial_%04d.json", t.no), truths[i]) end
   flow_keys[i] = flows:submit{script = workflow,
                               params = {input = util.absolute(path), particle_diameter = d_work, campaign_dir = campaign_dir, max_parallel = 2,
                                         pictures = P.report_pictures, code_version = P.code_version},
                               seed = 1000 + t.no}
+  end
+  ::next_trial::
 end
 
 -- 3. The workflow on every trial (one at a time; each runs its simulations two at a time).
 say("running the workflow on %d trials", #trials)
-local results = flows:run(flow_keys)
+local results, run_keys, pending_n = {}, {}, 0
+for i = 1, #trials do if flow_keys[i] then run_keys[#run_keys + 1] = flow_keys[i] end end
+local ran = entries_of(flows, run_keys)
+do
+  local n = 0
+  for i = 1, #trials do
+    if flow_keys[i] then n = n + 1; results[i] = ran[n] else results[i] = {status = "pending"} end
+    if results[i].status == "pending" then pending_n = pending_n + 1 end
+  end
+end
 local names, name_list = {}, {}
 for _, c in ipairs(set.candidates) do names[c.name] = true; name_list[#name_list + 1] = c.name end
 local scored = {}
@@ -216,13 +249,14 @@ for i, t in ipairs(trials) do
     say("trial %d: truth %s%s -> %s (%s)", t.no, truths[i].kind, truths[i].name and (" " .. truths[i].name) or "",
         row.answer, row.right and "right" or "wrong")
     scored[#scored + 1] = row
-  else
+  elseif r.status ~= "pending" then
     say("trial %d: the workflow failed: %s", t.no, tostring(r.error))
   end
 end
 local summary = score.summarise(scored, name_list)
 summary.particle_diameter, summary.truth_diameter, summary.candidate_set = d_work, d_truth, P.candidate_set
-summary.failed = #trials - #scored
+summary.failed = #trials - #scored - pending_n
+summary.pending = pending_n   -- progress_of: trials not finished yet (0 for a benchmark run to its end)
 local wall, sims_n = 0, 0
 for _, row in ipairs(scored) do wall, sims_n = wall + (row.wall_time_s or 0), sims_n + (row.simulations or 0) end
 summary.mean_wall_time_s = #scored > 0 and wall / #scored or nil

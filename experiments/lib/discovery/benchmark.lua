@@ -60,7 +60,7 @@ M.VANE_SPEEDS_RPM = "10,40"
 function M.vane_set(scale)
   return {cup_diameter = 0.1 * scale, cup_height = 0.12 * scale, fill_level = 0.12 * scale, vane_diameter = 0.05 * scale,
           vane_height = 0.06 * scale, vane_bottom = 0.03 * scale, speeds_rpm = M.VANE_SPEEDS_RPM, down_sweep = false,
-          startup_rpm = 5, startup_angle = 45, max_step_time = 2, settle_max_time = 1.5}
+          startup_rpm = 5, startup_angle = 60, max_step_time = 3, settle_max_time = 1.5}
 end
 
 -- The experiments of a variant: `full` (slump lifted at 0.1 and 0.4 m/s) or `small` (one slump at
