@@ -32,6 +32,8 @@ local P = paddy.parameters{
   {name = "cone_scales", default = "", description = "sizes of the slump cone as factors of the standard one (100/200/300 mm), comma-separated: one slump experiment per size and lift speed ('' = the standard cone only); a larger cone loads the mud more, which load-dependent effects feel and surface forces do not"},
   {name = "vane_scale", default = 0, min = 0, max = 8,
    description = "add the vane rheometer scaled by this factor from the standard 100 mm cup (lib/discovery/benchmark.lua: start-up peak and two steady torques; 0 = none, else 1-8): a flowing strength beside the slump's static one"},
+  {name = "truth_repeats", default = 1, type = "integer", min = 1, max = 20,
+   description = "truth runs (seeds) per measurement: the measured value is their mean, as a slump test is reported as the mean of repeated tests (the reference: 10), and the input says measured_repeats = this"},
   {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
    description = "each candidate's smallest relevant strength as a fraction of its range (its input key 'relevant'; docs/discovery.md, \"Decision\"): a weaker effect is not named. Hidden strengths are drawn from 0.15 of the range up; 0 = any strength counts"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
@@ -52,8 +54,9 @@ local free = bench.FREE
 
 local n_effect, n_null, n_outside = P.effect_trials, P.null_trials, P.outside_trials
 local d_work, d_truth = P.particle_diameter, P.truth_diameter
--- measured_repeats = 1: each measurement is one truth run, so it carries one seed's scatter on top
--- of the measurement noise (the specimen scatter of a single test). resolution_factor: the
+-- measured_repeats (= truth_repeats, below): each measurement is the mean of that many truth runs,
+-- so it carries their seed scatter (the specimen scatter of the tests) on top of the measurement
+-- noise. resolution_factor: the
 -- workflow's own check of its resolution bias, a generic 0.9 x its diameter (it is not told the truth's).
 local settings = {iterations = 5, replicates = 5, signature_seeds = 2, confirm_seeds = 2, measured_repeats = 1,
                   resolution_factor = 0.9, resolution_seeds = 2}
@@ -151,15 +154,20 @@ local function fnv1a(text)
   return h
 end
 
--- 1. The measurements: every trial's truth at truth_diameter, seeds far from the workflow's.
+-- 1. The measurements: every trial's truth at truth_diameter, seeds far from the workflow's
+-- (repeat r of truth_repeats at 500000 + trial seed + 10^6 (r - 1)).
 local keys, truths = {}, {}
+local R = P.truth_repeats
+settings.measured_repeats = R
 for i, t in ipairs(trials) do
   truths[i] = draw_truth(t)
   for _, e in ipairs(experiments) do
     local params = {particle_diameter = d_truth, pictures = false, snapshot_interval = 0, progress = false}
     for k, v in pairs(e.set) do params[k] = v end
     for k, v in pairs(truths[i].params) do params[k] = v end
-    keys[#keys + 1] = sims:submit{script = experiments_dir .. "/" .. e.script, params = params, seed = 500000 + t.seed}
+    for r = 1, R do
+      keys[#keys + 1] = sims:submit{script = experiments_dir .. "/" .. e.script, params = params, seed = 500000 + t.seed + 1000000 * (r - 1)}
+    end
   end
 end
 say("%d trials (%d effect, %d null, %d outside), workflow at %.0f mm, truth at %.0f mm: %d truth simulations",
@@ -174,14 +182,25 @@ for i, t in ipairs(trials) do
   local function gauss() return math.sqrt(-2 * math.log(1 - math.random())) * math.cos(2 * math.pi * math.random()) end
   local exps, pending = {}, false
   for j, e in ipairs(experiments) do
-    k = k + 1
-    local entry = entries[k]
-    pending = pending or entry.status == "pending"
+    local runs = {}
+    for r = 1, R do
+      k = k + 1
+      local entry = entries[k]
+      pending = pending or entry.status == "pending"
+      if not pending and entry.status ~= "done" then
+        error(string.format("blind: truth simulation of trial %d (%s, repeat %d) failed: %s", t.no, e.name, r, tostring(entry.error)), 0)
+      end
+      runs[r] = entry.result
+    end
     if pending then goto next_experiment end
-    if entry.status ~= "done" then error(string.format("blind: truth simulation of trial %d (%s) failed: %s", t.no, e.name, tostring(entry.error)), 0) end
     local measured, sigma = {}, {}
     for _, o in ipairs(e.observables) do
-      local v = assert(stack.extract(entry.result, o.key))
+      local v = assert(stack.extract(runs[1], o.key))
+      for r = 2, R do
+        local w = assert(stack.extract(runs[r], o.key))
+        for n = 1, #v do v[n] = v[n] + w[n] end
+      end
+      for n = 1, #v do v[n] = v[n] / R end
       local mv, sv = {}, {}
       for n, x in ipairs(v) do
         sv[n] = bench.noise_sd(o, x)
@@ -261,7 +280,8 @@ local wall, sims_n = 0, 0
 for _, row in ipairs(scored) do wall, sims_n = wall + (row.wall_time_s or 0), sims_n + (row.simulations or 0) end
 summary.mean_wall_time_s = #scored > 0 and wall / #scored or nil
 summary.mean_simulations = #scored > 0 and sims_n / #scored or nil
-summary.truth_simulations_per_trial = #experiments
+summary.truth_simulations_per_trial = #experiments * R
+summary.truth_repeats = R
 paddy.write_json("blind_summary.json", {summary = summary, trials = scored})
 say("correct names %d/%d, false alarms %d/%d", summary.correct_names, summary.effect_trials, summary.false_alarms, summary.null_trials)
 paddy.result{summary = summary, trials = scored}
