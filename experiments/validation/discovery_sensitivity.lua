@@ -27,7 +27,10 @@ local jobs = require("lib.calibration.jobs")
 
 local P = paddy.parameters{
   {name = "particle_diameter", default = 0.025, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of every run"},
-  {name = "theta", default = 0.15, unit = "J/m^2", min = 0.05, max = 0.3, description = "the free parameter (jkr_surface_energy, 2 mm value) at the model point"},
+  {name = "theta", default = 0.15, unit = "J/m^2", min = 0, max = 10, description = "the free parameter (jkr_surface_energy, 2 mm value) at the model point, inside [free_low, free_high]"},
+  {name = "free_low", default = 0.05, unit = "J/m^2", min = 0, max = 10, description = "lower end of the free parameter's range (the benchmark's: 0.05)"},
+  {name = "free_high", default = 0.3, unit = "J/m^2", min = 0, max = 10, description = "upper end of the free parameter's range (the benchmark's: 0.3)"},
+  {name = "material", default = "", description = "named contact-parameter set of every run ('' = the experiments' default; experiments/materials/paddy_mud.json)"},
   {name = "seeds", default = 3, type = "integer", min = 2, max = 50, description = "seeds of every run (the base runs' scatter is the seed noise)"},
   {name = "replicates", default = 5, type = "integer", min = 2, max = 1000, description = "replicates the workflow would average at the model point (its noise: Sigma_seed (1/replicates + 1))"},
   {name = "fd_step", default = 0.1, min = 0.01, max = 0.5, description = "the free parameter's finite-difference step as a fraction of its range"},
@@ -46,7 +49,11 @@ local experiments_dir = here .. "/.."
 local function say(fmt, ...) io.stderr:write("sensitivity: ", string.format(fmt, ...), "\n") end
 
 local cands = bench.CANDIDATE_SETS[P.candidate_set].candidates
-local free = bench.FREE[1]
+local free = {parameter = bench.FREE[1].parameter, low = P.free_low, high = P.free_high}
+if not (free.low < free.high and P.theta >= free.low and P.theta <= free.high) then
+  error(string.format("discovery_sensitivity.lua: theta = %g must lie in [free_low, free_high] = [%g, %g] with free_low < free_high",
+                      P.theta, free.low, free.high), 0)
+end
 local exps = bench.experiments{variant = P.variant, lift_speeds = P.lift_speeds, cone_scales = P.cone_scales, vane_scale = P.vane_scale}
 -- The same fixed parameters as discover.lua's runs: one step for all, no pictures.
 local mud = require("lib.mud")
@@ -54,6 +61,7 @@ local fixed = {particle_diameter = P.particle_diameter, pictures = false, snapsh
                timestep_fraction = P.timestep_fraction * mud.timestep_factor(0.055), timestep_damping = false}
 local campaign = paddy.campaign{dir = util.out("campaign"), executor = "local", max_parallel = P.max_parallel > 0 and P.max_parallel or nil,
                                 threads_per_job = 1, code_version = P.code_version ~= "" and P.code_version or nil}
+if P.material ~= "" then fixed.material = P.material end
 local runner = jobs.new{campaign = campaign, script = "slump.lua", fixed = fixed, responses = {}}
 
 -- Model points: base, the free parameter stepped, each candidate at its probe; every one at every seed.
