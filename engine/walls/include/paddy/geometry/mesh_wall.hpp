@@ -138,6 +138,7 @@ class MeshWall : public Wall {
   int material_;
   TriangleMesh mesh_;
   MeshWallOptions opt_;
+  double cos_cluster_ = 1.0, cos_merge_ = 1.0;  // cosines of opt_'s cluster and merge angles
   geometry::Motion motion_;
   geometry::Motion::State state_;  // at time_
   geometry::Pose pose_at_build_;
