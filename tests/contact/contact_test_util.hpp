@@ -46,8 +46,7 @@ struct Chain {
     batch->n = n;
     batch->dt = dt;
     history.assign(std::max<std::size_t>(1, n * history_size), 0.0);
-    batch->history = history.data();
-    batch->history_stride = history_size;
+    batch->setContiguousHistory(history.data(), history_size, n);
     for (std::size_t k = 0; k < n; ++k) {
       batch->vn[k] = 0.0;
       batch->vt[k].setZero();

@@ -222,8 +222,7 @@ TEST_CASE("contact/law order: a normal-force extra runs before tangential, so it
   ContactBatch& b = *batch;
   b.n = 1;
   b.dt = 1e-6;
-  b.history = history.data();
-  b.history_stride = law.historySize();
+  b.setContiguousHistory(history.data(), law.historySize(), 1);
   const double m = sphereMass(mud(), kR), d = 2e-6;
   setPair(b, 0, d, kR, kR, m, m);
   b.normal[0] = Vec3::UnitZ();

@@ -15,12 +15,14 @@ namespace {
 // With `receding_lid`, a plane wall above the spheres moves up and away at 2 m/s (like the slump
 // test's hopper once emptied): it never touches them, but it moves past the skin every few steps, so
 // the contact search is refreshed often with the particle list still valid (walls alone refreshed).
-std::unique_ptr<Simulation> makeGranularGas(int threads, bool receding_lid = false) {
+// With `count_evaluations`, the contacts also count in their history how often they were evaluated.
+std::unique_ptr<Simulation> makeGranularGas(int threads, bool receding_lid = false, bool count_evaluations = false) {
   auto sim = std::make_unique<Simulation>(test::testPlugins());
   const int mud = sim->addMaterial(test::mud());
   const int steel = sim->addMaterial(Material{"steel", 7800.0, 7e9, 0.3});
   auto spec = test::linearSpring();
   spec.extras = {"contact_age"};
+  if (count_evaluations) spec.extras.push_back("evaluation_count");
   spec.params["stiffness"] = 200.0;
   sim->setInteraction(mud, mud, spec);
   sim->setInteraction(mud, steel, spec);
@@ -111,4 +113,32 @@ TEST_CASE("walls refreshed apart from the particle list: a wall moving away chan
     REQUIRE(full->wall(0).force() == resumed->wall(0).force());
   }
   std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("asking for the contacts between steps changes neither the run nor the stored contact history",
+          "[engine][history][walls]") {
+  for (int threads : {1, 2}) {
+    auto asked = makeGranularGas(threads, false, true);
+    auto plain = makeGranularGas(threads, false, true);
+    std::size_t asked_records = 0;
+    for (int s = 0; s < 400; ++s) {
+      asked->step(1);
+      asked_records += asked->contacts().size();  // a dry pass after every step
+    }
+    plain->step(400);
+    REQUIRE(asked_records > 1000);
+    REQUIRE(sameState(*asked, *plain));
+    const auto a = asked->contacts(), p = plain->contacts();
+    REQUIRE(a.size() == p.size());
+    bool wall_seen = false;
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      wall_seen = wall_seen || a[k].wall;
+      REQUIRE(a[k].id_i == p[k].id_i);
+      REQUIRE(a[k].id_j == p[k].id_j);
+      REQUIRE(a[k].wall == p[k].wall);
+      REQUIRE(a[k].history == p[k].history);  // the evaluation count of the steps alone
+      REQUIRE(a[k].history[2] <= 400.0);
+    }
+    REQUIRE(wall_seen);
+  }
 }

@@ -1,5 +1,6 @@
 // Minimal sub-models used to test the engine's mechanics independently of the physics plugins:
-// a linear spring normal law, and an "age" extra that accumulates time in contact in history.
+// a linear spring normal law, an "age" extra that accumulates time in contact in history, and an
+// extra that counts in history how often the chain ran on a contact.
 #pragma once
 
 #include <paddy/plugin_manager.hpp>
@@ -42,6 +43,17 @@ class ContactAge final : public SubModel {
   }
 };
 
+// history[0] += 1 every time the chain runs on an active contact, whatever the pass (dt = 0 too):
+// shows whether a pass wrote the stored history.
+class EvaluationCount final : public SubModel {
+ public:
+  std::size_t historySize() const override { return 1; }
+  void compute(ContactBatch& b, std::size_t off) const override {
+    for (std::size_t m = 0; m < b.n; ++m)
+      if (b.active[m]) b.historyOf(m, off)[0] += 1.0;
+  }
+};
+
 inline std::shared_ptr<PluginManager> testPlugins() {
   auto pm = std::make_shared<PluginManager>();
   SubModelInfo lin;
@@ -55,6 +67,11 @@ inline std::shared_ptr<PluginManager> testPlugins() {
   age.kind = SubModelKind::Extra;
   age.create = [](const ParamValues&, const MaterialPair&) { return std::make_unique<ContactAge>(); };
   pm->addSubModel(age);
+  SubModelInfo count;
+  count.name = "evaluation_count";
+  count.kind = SubModelKind::Extra;
+  count.create = [](const ParamValues&, const MaterialPair&) { return std::make_unique<EvaluationCount>(); };
+  pm->addSubModel(count);
   return pm;
 }
 

@@ -287,6 +287,58 @@ TEST_CASE("geometry candidate lists give the same contacts as a full search, cos
   CHECK(ratio[0] < 6.0);
 }
 
+TEST_CASE("geometry candidate lists hold each triangle within reach exactly once, and give the full search's "
+          "contacts (single-surface cone, closed cup)") {
+  CupParams cp;
+  cp.thickness = 0.005;  // a closed solid
+  const std::pair<const char*, TriangleMesh> parts[] = {{"cone", buildSlumpCone()}, {"cup", buildCup(cp)}};
+  for (const auto& [name, mesh] : parts) {
+    MeshWall wall(name, 0, mesh);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> urho(0.0, 0.12), uphi(0.0, 2.0 * kPi), uz(-0.01, 0.32), ur(0.004, 0.006);
+    std::vector<Vec3> pos;
+    std::vector<double> rad;
+    for (int i = 0; i < 20000; ++i) {
+      const double rho = urho(rng), phi = uphi(rng);
+      pos.emplace_back(rho * std::cos(phi), rho * std::sin(phi), uz(rng));
+      rad.push_back(ur(rng));
+    }
+    const double range = 0.003, max_gap = 0.0005;
+    ParticleView view{pos.size(), pos.data(), rad.data()};
+    wall.buildCandidates(view, range);
+    wall.markListBuilt();
+    // Brute force over every triangle: the pairs within radius + range, the particles with one.
+    std::size_t pairs = 0, particles = 0;
+    const TriangleMesh& m = wall.bodyMesh();
+    for (std::size_t i = 0; i < pos.size(); ++i) {
+      const double reach = rad[i] + range;
+      std::size_t own = 0;
+      for (const auto& t : m.triangles) {
+        const Vec3 q = closestPointOnTriangle(pos[i], m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]).point;
+        if ((q - pos[i]).squaredNorm() <= reach * reach) ++own;
+      }
+      pairs += own;
+      particles += own > 0 ? 1 : 0;
+    }
+    INFO(name);
+    REQUIRE(particles > 1000);
+    CHECK(wall.candidateParticles() == particles);
+    CHECK(wall.candidatePairs() == pairs);
+    // The contacts from the candidate lists are those of the search over the whole grid.
+    std::vector<WallContact> fast, slow;
+    wall.findContacts(view, max_gap, fast);
+    for (std::size_t i = 0; i < pos.size(); ++i) wall.contactsOfSphere(pos[i], rad[i], max_gap, static_cast<std::uint32_t>(i), slow);
+    REQUIRE(fast.size() > 100);
+    REQUIRE(fast.size() == slow.size());
+    for (std::size_t k = 0; k < fast.size(); ++k) {
+      REQUIRE(fast[k].particle == slow[k].particle);
+      REQUIRE(fast[k].key == slow[k].key);
+      REQUIRE(fast[k].overlap == slow[k].overlap);
+      REQUIRE(fast[k].normal == slow[k].normal);
+    }
+  }
+}
+
 TEST_CASE("geometry moved wall: contacts follow the pose (tilted, shifted plate)") {
   Pose place;
   place.R = Eigen::AngleAxisd(0.3, Vec3(1, 0, 0)).toRotationMatrix();

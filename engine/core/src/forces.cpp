@@ -14,7 +14,7 @@ namespace paddy {
 
 void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
   // The buffers keep their size between steps: re-initialise only when something changed (the
-  // batch history scratch is overwritten contact by contact before every use).
+  // history scratch of a dry pass is overwritten contact by contact before every use).
   const std::size_t hist_size = ContactBatch::kCapacity * std::max<std::size_t>(history_stride, 1);
   bool same = threads.size() == static_cast<std::size_t>(n_threads);
   for (std::size_t t = 0; same && t < threads.size(); ++t) {
@@ -32,8 +32,6 @@ void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
     for (std::size_t l = 0; l < laws.size(); ++l) {
       tb.work[l].law = static_cast<int>(l);
       tb.work[l].history.assign(hist_size, 0.0);
-      tb.work[l].batch.history = tb.work[l].history.data();
-      tb.work[l].batch.history_stride = history_stride;
     }
   }
 }
@@ -98,6 +96,16 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       w.batch.time = s.time_;
     }
 
+    // Where contact m of a batch keeps its history while the laws run: the stored block itself
+    // (the laws update it in place), or in a dry pass a copy in the batch's scratch, so that the
+    // stored history stays as it was.
+    auto historySlot = [&](BatchWork& w, std::size_t m, double* stored) -> double* {
+      if (!dry) return stored;
+      double* copy = w.history.data() + m * stride;
+      std::copy_n(stored, stride, copy);
+      return copy;
+    };
+
     auto flush = [&](BatchWork& w, bool is_wall) {
       ContactBatch& b = w.batch;
       if (b.n == 0) return;
@@ -136,12 +144,11 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
             r.normal = b.normal[m];
             r.fn = b.fn[m];
             r.ft = b.ft[m];
-            r.history.assign(b.history + m * stride, b.history + (m + 1) * stride);
+            if (stride > 0) r.history.assign(b.history_at[m], b.history_at[m] + stride);
             tb.records.push_back(std::move(r));
           }
-        } else if (stride > 0) {
-          std::copy_n(b.history + m * stride, stride, w.slot_history[m]);
-          if (w.slot_live[m]) *w.slot_live[m] = 1;
+        } else if (stride > 0 && w.slot_live[m]) {
+          *w.slot_live[m] = 1;
         }
       }
       b.n = 0;
@@ -183,10 +190,9 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         const Vec3 cj = (rj - 0.5 * overlap) * nrm;
         const Vec3 vj_contact = vel[j] + omg[j].cross(cj);
         kernel::fill(b, m, nrm, overlap, ri, rj, p.mass[i], p.mass[j], vel[i], omg[i], vj_contact, omg[j]);
-        if (stride > 0) std::copy_n(&list.history[k * stride], stride, b.history + m * stride);
+        if (stride > 0) b.history_at[m] = historySlot(w, m, &list.history[k * stride]);
         w.i[m] = static_cast<std::uint32_t>(i);
         w.j[m] = j;
-        w.slot_history[m] = stride > 0 ? &list.history[k * stride] : nullptr;
         w.slot_live[m] = &list.live[k];
         b.n = m + 1;
         if (b.n == ContactBatch::kCapacity) flush(w, false);
@@ -207,10 +213,9 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       const double inf = std::numeric_limits<double>::infinity();
       kernel::fill(b, m, wc.normal, wc.overlap, p.radius[i], inf, p.mass[i], inf, vel[i], omg[i],
                    wall.velocityAt(wc.point), wall.angularVelocity());
-      if (stride > 0) std::copy_n(&wall_hist[c * stride], stride, b.history + m * stride);
+      if (stride > 0) b.history_at[m] = historySlot(w, m, &wall_hist[c * stride]);
       w.i[m] = i;
       w.j[m] = static_cast<std::uint32_t>(c);
-      w.slot_history[m] = stride > 0 ? &wall_hist[c * stride] : nullptr;
       w.slot_live[m] = nullptr;
       w.point[m] = wc.point;
       b.n = m + 1;

@@ -68,7 +68,11 @@ void Simulation::Impl::buildWallCandidates(Simulation& s, const std::vector<Vec3
   if (s.walls_.empty()) return;
   const ParticleArrays& p = s.p_;
   ParticleView view{x.size(), x.data(), p.radius.data(), s.threads_};
-  const double range = maxRadius(p) + wall_max_gap + skin;
+  // A wall contact acts within radius + wall_max_gap. Until the next refresh a particle and a wall
+  // together move less than one skin (the refresh rule in step()), so a triangle or plane within
+  // radius + wall_max_gap + skin now holds every contact until then. 1 % of the largest radius on
+  // top is room for the rounding of the distances (orders of magnitude more than it).
+  const double range = wall_max_gap + skin + 0.01 * maxRadius(p);
   for (auto& w : s.walls_) {
     w->buildCandidates(view, range);
     w->markListBuilt();

@@ -94,6 +94,10 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
     const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
     auto& out = per_thread[static_cast<std::size_t>(t)];
     out.clear();
+    // The pair law's largest gap for the pair's R*, computed again only when the law or R* differs
+    // from the previous pair's (once per law for a monodisperse fill).
+    int sep_law = -1;
+    double sep_r_eff = 0.0, sep_pair = 0.0;
     for (std::size_t i = lo; i < hi; ++i) {
       const Vec3 xi = p.position[i];
       const double ri = p.radius[i];
@@ -124,7 +128,12 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
                 continue;
               }
               const double r_eff = ri * rj / (ri + rj);
-              const double reach = ri + rj + laws[law].maxSeparation(r_eff);
+              if (law != sep_law || r_eff != sep_r_eff) {
+                sep_law = law;
+                sep_r_eff = r_eff;
+                sep_pair = laws[law].maxSeparation(r_eff);
+              }
+              const double reach = ri + rj + sep_pair;
               const double reach_skin = reach + skin;
               if (d2 >= reach_skin * reach_skin) continue;
               out.push_back({j, law, reach * reach});

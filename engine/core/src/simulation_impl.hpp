@@ -22,11 +22,10 @@ namespace paddy {
 // A batch being filled by one thread, and where each of its contacts came from.
 struct BatchWork {
   ContactBatch batch;
-  std::vector<double> history;            // kCapacity × stride
+  std::vector<double> history;            // kCapacity × stride: copies of the history in a dry pass
   std::uint32_t i[ContactBatch::kCapacity];
   std::uint32_t j[ContactBatch::kCapacity];  // particle index, or wall contact index for walls
-  double* slot_history[ContactBatch::kCapacity];  // where to write history back (nullptr: none)
-  std::uint8_t* slot_live[ContactBatch::kCapacity];
+  std::uint8_t* slot_live[ContactBatch::kCapacity];  // the list slot's live flag (nullptr: a wall)
   Vec3 point[ContactBatch::kCapacity];       // contact point (walls)
   int law = -1;
 };

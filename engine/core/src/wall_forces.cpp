@@ -24,6 +24,10 @@ void Simulation::Impl::collectWallContacts(Simulation& s, double max_gap, std::v
   std::vector<WallContactOrder>& order = wall_scratch_order;
   found.clear();
   order.clear();
+  // The largest gap of the contact's law for its particle's radius, computed again only when the
+  // law or the radius differs from the previous contact's (once for a monodisperse fill).
+  int gap_law = -1;
+  double gap_radius = 0.0, gap = 0.0;
   for (std::size_t w = 0; w < s.walls_.size(); ++w) {
     tmp.clear();
     s.walls_[w]->findContacts(view, max_gap, tmp);
@@ -33,7 +37,13 @@ void Simulation::Impl::collectWallContacts(Simulation& s, double max_gap, std::v
         throw InputError("no interaction is defined between materials '" + s.materials_[p.material[c.particle]].name +
                          "' and '" + s.materials_[s.walls_[w]->material()].name + "' (wall '" +
                          s.walls_[w]->name() + "')");
-      if (c.overlap < -laws[static_cast<std::size_t>(law)].maxSeparation(p.radius[c.particle])) continue;
+      const double radius = p.radius[c.particle];
+      if (law != gap_law || radius != gap_radius) {
+        gap_law = law;
+        gap_radius = radius;
+        gap = laws[static_cast<std::size_t>(law)].maxSeparation(radius);
+      }
+      if (c.overlap < -gap) continue;
       order.push_back({p.id[c.particle], static_cast<std::uint32_t>(w), c.key, static_cast<std::uint32_t>(found.size())});
       found.push_back(c);
     }

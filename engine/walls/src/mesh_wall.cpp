@@ -23,6 +23,8 @@ MeshWall::MeshWall(std::string name, int material, TriangleMesh body_mesh, const
   checkRange(check.source + " region_angle_deg", opt_.region_angle_deg, 0.0, 90.0, "deg");
   checkRange(check.source + " cluster_angle_deg", opt_.cluster_angle_deg, 0.0, 180.0, "deg");
   checkRange(check.source + " merge_angle_deg", opt_.merge_angle_deg, 0.0, 90.0, "deg");
+  cos_cluster_ = mesh_wall_detail::cosDeg(opt_.cluster_angle_deg);  // once, not per sphere (reduce)
+  cos_merge_ = mesh_wall_detail::cosDeg(opt_.merge_angle_deg);
   buildTopology();
   moveTo(0.0);
   pose_at_build_ = state_.pose;

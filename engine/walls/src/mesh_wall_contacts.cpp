@@ -1,26 +1,33 @@
 // MeshWall contact search, per sphere, in the body frame (centre X = Rᵀ(c − x)):
 // closestHits takes the closest point q of each candidate triangle (Voronoi regions, C. Ericson,
 // "Real-Time Collision Detection", 2005, §5.1.5; closest_point.hpp) and keeps it as a Hit when
-// d = |X − q| < radius + max_gap; reduce (mesh_wall_reduce.cpp) turns one sphere's hits into
-// contacts. findContacts runs over the candidate lists (mesh_wall_grid.cpp) on the
-// simulation's threads, static chunks in thread order, so the contacts come out in candidate order
-// whatever the thread count; contactsOfSphere takes one sphere's triangles from the grid
-// (mesh_wall_grid.cpp; every triangle when none is built). Contacts with overlap ≤ −max_gap are
-// dropped.
+// d = |X − q| < radius + max_gap (a triangle whose plane is farther than that is skipped before
+// its closest point is taken: the plane's distance is a lower bound of d); reduce
+// (mesh_wall_reduce.cpp) turns one sphere's hits into contacts. findContacts runs over the
+// candidate lists (mesh_wall_grid.cpp) on the simulation's threads, static chunks in thread
+// order, so the contacts come out in candidate order whatever the thread count; contactsOfSphere
+// takes one sphere's triangles from the grid (mesh_wall_grid.cpp; every triangle when none is
+// built). Contacts with overlap ≤ −max_gap are dropped.
 #include "mesh_wall_internal.hpp"
 
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace paddy {
 
 void MeshWall::closestHits(const Vec3& xb, double reach, const std::uint32_t* first, const std::uint32_t* last,
                            std::vector<Hit>& hits) const {
+  // The distance to a triangle's plane is a lower bound of the distance to the triangle: a
+  // triangle whose plane lies beyond reach is no hit, found without its closest point (the
+  // relative margin keeps the rounding of the two distances from dropping a hit).
+  const double plane_reach = reach * (1.0 + 1e-9);
   for (const std::uint32_t* it = first; it != last; ++it) {
     const std::uint32_t t = *it;
     const auto& tri = mesh_.triangles[t];
+    if (std::abs(tri_normal_[t].dot(xb - mesh_.vertices[tri[0]])) > plane_reach) continue;
     const auto cp = geometry::closestPointOnTriangle(xb, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
     const double d = (cp.point - xb).norm();
     if (d >= reach) continue;

@@ -11,11 +11,14 @@
 //
 // Candidate lists (buildCandidates): each particle within radius + range of the wall keeps the
 // triangles whose closest point lies within radius + range of its centre, taken into the body
-// frame (X = Rᵀ(c − x)). The grid is rebuilt when the query radius is more than twice or less
-// than a quarter of the one it was built for. With the engine's rebuild rule (displacement >
-// skin/2) the lists hold every triangle that can come within radius + max_gap provided
-// range ≥ max_gap + skin. CSR lists: cand_particle_[c] has the triangles
-// cand_tri_[cand_off_[c] .. cand_off_[c + 1]), in particle order whatever the thread count.
+// frame (X = Rᵀ(c − x)). Each triangle of the particle's cells is looked at once (a stamp per
+// triangle), and one whose plane lies beyond reach is dropped before its closest point is taken
+// (the plane's distance is a lower bound of the triangle's). The grid is rebuilt when the query
+// radius is more than twice or less than a quarter of the one it was built for. With the
+// engine's rebuild rule (displacement > skin/2) the lists hold every triangle that can come
+// within radius + max_gap provided range ≥ max_gap + skin. CSR lists: cand_particle_[c] has the
+// triangles cand_tri_[cand_off_[c] .. cand_off_[c + 1]), ascending, in particle order whatever
+// the thread count.
 //
 // The three functions share one file on purpose: with closestPointOnTriangle called from both
 // buildGrid and buildCandidates the compiler keeps it out of line in both, as it did before the
@@ -29,7 +32,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -86,11 +88,10 @@ void MeshWall::buildGrid(double query) {
   grid_ = std::move(g);
 }
 
-void MeshWall::gatherTriangles(const Vec3& xb, double reach, std::vector<std::uint32_t>& tris) const {
-  tris.clear();
+template <class Visit>
+void MeshWall::forEachCellItem(const Vec3& xb, double reach, Visit&& visit) const {
   if (!grid_) {
-    tris.resize(mesh_.triangles.size());
-    std::iota(tris.begin(), tris.end(), 0u);
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) visit(static_cast<std::uint32_t>(t));
     return;
   }
   const Grid& g = *grid_;
@@ -106,8 +107,13 @@ void MeshWall::gatherTriangles(const Vec3& xb, double reach, std::vector<std::ui
     for (int j = lo[1]; j <= hi[1]; ++j)
       for (int i = lo[0]; i <= hi[0]; ++i) {
         const std::size_t c = g.index(i, j, k);
-        tris.insert(tris.end(), g.items.begin() + g.start[c], g.items.begin() + g.start[c + 1]);
+        for (std::uint32_t q = g.start[c]; q < g.start[c + 1]; ++q) visit(g.items[q]);
       }
+}
+
+void MeshWall::gatherTriangles(const Vec3& xb, double reach, std::vector<std::uint32_t>& tris) const {
+  tris.clear();
+  forEachCellItem(xb, reach, [&](std::uint32_t t) { tris.push_back(t); });
   std::sort(tris.begin(), tris.end());
   tris.erase(std::unique(tris.begin(), tris.end()), tris.end());
 }
@@ -128,25 +134,31 @@ void MeshWall::buildCandidates(const ParticleView& p, double range) {
 #pragma omp parallel num_threads(nthreads) if (n >= mesh_wall_detail::kParallelMin)
   {
     const auto tid = static_cast<std::size_t>(omp_get_thread_num());
-    std::vector<std::uint32_t> tris;
+    // Per thread: the last particle (index + 1) that looked at each triangle, so that a triangle
+    // listed in several of the particle's cells is tested once, and the triangles kept.
+    std::vector<std::uint32_t> seen_by(mesh_.triangles.size(), 0), kept;
 #pragma omp for schedule(static)
     for (long i = 0; i < n; ++i) {
       const Vec3 xb = state_.pose.toBody(p.position[i]);
       const double reach = p.radius[i] + range;
-      gatherTriangles(xb, reach, tris);
-      std::uint32_t kept = 0;
-      for (std::uint32_t t : tris) {
+      // The plane's distance is a lower bound of the triangle's: beyond reach (with a relative
+      // margin for rounding), the triangle is out without its closest point.
+      const double plane_reach = reach * (1.0 + 1e-9);
+      const auto stamp = static_cast<std::uint32_t>(i) + 1;
+      kept.clear();
+      forEachCellItem(xb, reach, [&](std::uint32_t t) {
+        if (seen_by[t] == stamp) return;
+        seen_by[t] = stamp;
         const auto& tri = mesh_.triangles[t];
+        if (std::abs(tri_normal_[t].dot(xb - mesh_.vertices[tri[0]])) > plane_reach) return;
         const auto cp = geometry::closestPointOnTriangle(xb, mesh_.vertices[tri[0]], mesh_.vertices[tri[1]], mesh_.vertices[tri[2]]);
-        if ((cp.point - xb).squaredNorm() <= reach * reach) {
-          ltri[tid].push_back(t);
-          ++kept;
-        }
-      }
-      if (kept) {
-        lpart[tid].push_back(static_cast<std::uint32_t>(i));
-        lcount[tid].push_back(kept);
-      }
+        if ((cp.point - xb).squaredNorm() <= reach * reach) kept.push_back(t);
+      });
+      if (kept.empty()) continue;
+      std::sort(kept.begin(), kept.end());  // ascending, as gatherTriangles lists them
+      ltri[tid].insert(ltri[tid].end(), kept.begin(), kept.end());
+      lpart[tid].push_back(static_cast<std::uint32_t>(i));
+      lcount[tid].push_back(static_cast<std::uint32_t>(kept.size()));
     }
   }
   cand_particle_.clear();

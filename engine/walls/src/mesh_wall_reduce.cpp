@@ -99,8 +99,7 @@ void MeshWall::reduce(const Vec3& xb, double radius, std::uint32_t particle, std
   std::sort(hits.begin(), hits.end(), [](const Hit& a, const Hit& b) {
     return a.region < b.region || (a.region == b.region && (a.d < b.d || (a.d == b.d && a.tri < b.tri)));
   });
-  const double cos_cluster = mesh_wall_detail::cosDeg(opt_.cluster_angle_deg),
-               cos_merge = mesh_wall_detail::cosDeg(opt_.merge_angle_deg);
+  const double cos_cluster = cos_cluster_, cos_merge = cos_merge_;
   // Accepted contacts, compacted to the front of `hits`.
   std::size_t accepted = 0, region_begin = 0;
   for (std::size_t i = 0; i < hits.size(); ++i) {

@@ -49,11 +49,16 @@ struct ContactBatch {
   Vec3 omega_j[kCapacity];      // angular velocity of j [rad/s] (a wall's, for wall contacts)
 
   // ---- per-contact history, persistent across steps and neighbour-list rebuilds -------------
-  // Contact k's block starts at history + k * history_stride; a sub-model owns `historySize()`
-  // doubles from the offset it is given. New contacts start with zeros.
-  double* history = nullptr;
-  std::size_t history_stride = 0;
-  double* historyOf(std::size_t k, std::size_t offset) { return history + k * history_stride + offset; }
+  // Contact k's block starts at history_at[k]; a sub-model owns `historySize()` doubles from the
+  // offset it is given. New contacts start with zeros. The engine points history_at[k] at the
+  // contact's own stored block, so a sub-model reads and writes the history in place (no copy
+  // into the batch and back); setContiguousHistory lays the blocks of contacts 0 .. count − 1 out
+  // one after another in one array of count × stride doubles instead (tests, tools).
+  double* history_at[kCapacity] = {};
+  double* historyOf(std::size_t k, std::size_t offset) { return history_at[k] + offset; }
+  void setContiguousHistory(double* history, std::size_t stride, std::size_t count) {
+    for (std::size_t k = 0; k < count && k < kCapacity; ++k) history_at[k] = history + k * stride;
+  }
 
   // ---- shared state: written by the normal model, read by the others ------------------------
   std::uint8_t active[kCapacity];  // 1: bodies interact through the contact patch this step

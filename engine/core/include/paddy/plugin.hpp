@@ -30,7 +30,9 @@
 // Version 4: ParamSpec gained the coarse-graining law; SubModelInfo gained provides / needs /
 //            refuses capability flags; extras providing a normal force run right after the
 //            normal model.
-#define PADDY_PLUGIN_ABI_VERSION 4
+// Version 5: ContactBatch holds a pointer to each contact's history block (history_at, read
+//            through historyOf as before) instead of one array with a stride.
+#define PADDY_PLUGIN_ABI_VERSION 5
 #define PADDY_PLUGIN_EXPORT __attribute__((visibility("default")))
 
 namespace paddy {

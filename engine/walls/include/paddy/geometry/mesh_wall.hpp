@@ -120,6 +120,12 @@ class MeshWall : public Wall {
   struct Grid;
   void buildTopology();
   void buildGrid(double query_radius);
+  // Calls visit(triangle) for every item of the grid cells that the query box (centre xb,
+  // half-width reach) overlaps: a triangle listed in several of them comes once per cell
+  // (every triangle once when there is no grid).
+  template <class Visit>
+  void forEachCellItem(const Vec3& xb, double reach, Visit&& visit) const;
+  // The same triangles, sorted and each once.
   void gatherTriangles(const Vec3& xb, double reach, std::vector<std::uint32_t>& tris) const;
   // Appends a Hit for each triangle in [first, last) whose closest point is nearer than reach.
   void closestHits(const Vec3& xb, double reach, const std::uint32_t* first, const std::uint32_t* last,
@@ -132,6 +138,7 @@ class MeshWall : public Wall {
   int material_;
   TriangleMesh mesh_;
   MeshWallOptions opt_;
+  double cos_cluster_ = 1.0, cos_merge_ = 1.0;  // cosines of opt_'s cluster and merge angles
   geometry::Motion motion_;
   geometry::Motion::State state_;  // at time_
   geometry::Pose pose_at_build_;
