@@ -150,6 +150,8 @@ TEST_CASE("lua: warning for threads on busy cores", "[lua][threads]") {
   CHECK(busy.find("2 threads") != std::string::npos);
   CHECK(busy.find("load average is 2.0 on 2 CPUs") != std::string::npos);
   CHECK(busy.find("--threads 1") != std::string::npos);
+  CHECK(busy.find("OMP_WAIT_POLICY=passive") != std::string::npos);  // the remedy when threads spin
+  CHECK(contentionWarning(2, CpuLoad{2.0, 2}, true).find("OMP_WAIT_POLICY") == std::string::npos);  // already set
   CHECK_FALSE(contentionWarning(2, CpuLoad{1.0, 2}).empty());  // one core busy: still waits
   CHECK(contentionWarning(16, CpuLoad{10.0, 16}).find("--threads 6") != std::string::npos);  // 6 idle
   // The machine's figures can be read here.

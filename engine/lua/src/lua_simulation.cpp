@@ -56,7 +56,7 @@ int newSimulation(lua_State* L) {
   if (threads > 1 && !st.contention_checked) {  // once per run, at the first parallel simulation
     st.contention_checked = true;
     if (const auto load = currentCpuLoad()) {
-      const std::string warning = contentionWarning(static_cast<int>(threads), *load);
+      const std::string warning = contentionWarning(static_cast<int>(threads), *load, passiveWaitPolicy());
       if (!warning.empty()) std::fprintf(stderr, "%s\n", warning.c_str());
     }
   }
