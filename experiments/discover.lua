@@ -181,29 +181,44 @@ local outcome = {input = input, parameters = P, layout = L, measured = y, fixed 
 -- the optimum). So a fit (below) starts at the best of its start point and start_scan points spread over
 -- the free parameters' box (a Latin-hypercube-like design: point k puts parameter j at the centre
 -- of stratum (k·(2j − 1)) mod n of its range; any effect strength stays as in the start), every
--- point at the start's seed. Returns the best point and the scan's record.
-local function scan_start(stage, start, weights)
+-- point at the start's seed. When the fit's dimensions hold more than the free parameters (the
+-- recalibration with an effect), start_scan more points spread the same way over every dimension,
+-- the effect's strength included: the score test's strength is linear in the effect and a strong
+-- one (wall adhesion that lifts the mud with the cone) is underestimated by far, so the refit must
+-- not start only at it. Returns the best point and the scan's record.
+local function scan_start(stage, start, weights, dims)
   if S.start_scan <= 0 or p == 0 then return start, nil end
   local n = S.start_scan
   local pts = {copy_point(start)}
   pts[1].label = stage .. " scan 0"
-  for k = 1, n do
-    local q = copy_point(start)
-    for j, f in ipairs(free) do
+  local function spread(q, k, list)
+    for j, d in ipairs(list) do
       local stratum = (k * (2 * j - 1)) % n
-      q.theta[j] = f.low + (stratum + 0.5) / n * (f.high - f.low)
+      q = d.set(q, d.lo + (stratum + 0.5) / n * (d.hi - d.lo))
     end
+    return q
+  end
+  local theta_only = theta_dims()
+  for k = 1, n do
+    local q = spread(copy_point(start), k, theta_only)
     q.label = stage .. " scan " .. k
     pts[#pts + 1] = q
+  end
+  if dims and #dims > #theta_only then
+    for k = 1, n do
+      local q = spread(copy_point(start), k, dims)
+      q.label = stage .. " scan " .. (n + k)
+      pts[#pts + 1] = q
+    end
   end
   local fs = evaluate(stage, pts)
   local best_k, best_rms, record = 1, math.huge, {}
   for k, f in ipairs(fs) do
     local rms = stack.rms_standardised(stack.minus(y, f), weights)
-    record[k] = {theta = pts[k].theta, rms_sigma = rms}
+    record[k] = {theta = pts[k].theta, lambda = pts[k].lambda, rms_sigma = rms}
     if rms < best_rms then best_k, best_rms = k, rms end
   end
-  say("   start scan of %d point(s): best %s, RMS residual %.3g", n + 1, fmt_point(pts[best_k]), best_rms)
+  say("   start scan of %d point(s): best %s, RMS residual %.3g", #pts, fmt_point(pts[best_k]), best_rms)
   local best = copy_point(pts[best_k])
   best.label = nil
   return best, record
@@ -217,7 +232,7 @@ end
 -- Gauss-Newton step computed there (its se), every point run (`history`) and the start scan (`scan`).
 local function fit(stage, start, dims, weights)
   local scan
-  start, scan = scan_start(stage, start, weights)
+  start, scan = scan_start(stage, start, weights, dims)
   local history = {}
   local lo, hi = {}, {}
   for j, d in ipairs(dims) do lo[j], hi[j] = d.lo, d.hi end
