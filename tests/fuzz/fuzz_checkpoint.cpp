@@ -1,6 +1,9 @@
 // Fuzz target: restart from a checkpoint (engine/core/src/checkpoint_load.cpp, through sim:run's
-// resume in engine/lua/src/lua_run.cpp). A fixed script builds a small pile (two materials, a
-// floor, contacts with history) and writes a checkpoint at step 30 once; each input is decoded
+// resume in engine/lua/src/lua_run.cpp). Two fixed scripts, chosen by the input's first byte: a
+// small pile (two materials, a plane floor, Hertz-Mindlin contacts with history), and a pile of
+// JKR spheres with rolling friction in a meshed cup with a meshed plate lid moving down on it
+// (mesh walls with their pose, motion and wall-contact history; contacts in tension). Each
+// writes a checkpoint at step 30 once; each input's remaining bytes are decoded
 // into operations on that checkpoint held as data (checkpoint_model.hpp: remove or add datasets
 // and attributes, change element types, shapes, row counts, values to NaN, infinities, negative,
 // huge or off-by-one ones, declare huge sizes without data, compress), the result is written as
@@ -65,6 +68,46 @@ end
 paddy.result{steps = sim:steps()}
 )lua";
 
+// The mesh-wall scenario: the same parameters and resume check.
+const char* const kMeshScript = R"lua(
+local P = paddy.parameters{
+  checkpoint = {default = "", type = "string", description = "checkpoint file (absolute path)"},
+  write = {default = 0, type = "integer", min = 0, max = 1, description = "1: only write the checkpoint at step 30"},
+  expect_resumed = {default = 0, type = "integer", min = 0, max = 1, description = "1: the run must resume at step 30"},
+}
+local sim = paddy.simulation{threads = 1}
+local mud = sim:material{name = "mud", density = 1680, shear_modulus = 1e6, poisson = 0.5}
+local steel = sim:material{name = "steel", density = 7800, shear_modulus = 7e9, poisson = 0.3}
+sim:interaction(mud, mud, {normal = "jkr", rolling = "constant_torque", restitution = 0.5, friction = 0.3,
+                           rolling_friction = 0.1, surface_energy = 0.1})
+sim:interaction(mud, steel, {normal = "jkr", restitution = 0.3, friction = 0.6, surface_energy = 0.05})
+sim:add_mesh_wall{name = "cup", material = steel, part = "cup", params = {diameter = 0.012, height = 0.01},
+                  motion = {type = "fixed"}}
+local lid = sim:add_mesh_wall{name = "lid", material = steel, part = "plate", params = {side = 0.01},
+                              translate = {0, 0, 0.00398}, motion = {type = "translate", velocity = {0, 0, -0.02}}}
+-- A ring of six touching its neighbours and a centre sphere on the cup's bottom, one on top under the lid.
+for k = 0, 5 do
+  local a = 2 * math.pi * k / 6
+  sim:add_particle{pos = {0.002 * math.cos(a), 0.002 * math.sin(a), 0.00101}, radius = 0.001, material = mud}
+end
+sim:add_particle{pos = {0, 0, 0.00101}, radius = 0.001, material = mud}
+sim:add_particle{pos = {0, 0, 0.00299}, radius = 0.001, material = mud}
+if P.write == 1 then
+  sim:run{steps = 30, progress = false}
+  sim:checkpoint(P.checkpoint)
+else
+  local calls = 0
+  sim:run{steps = 60, progress = false, checkpoint = P.checkpoint, checkpoint_every = 20 * sim:timestep(),
+          every_steps = 10, callback = function() calls = calls + 1 end}
+  if P.expect_resumed == 1 and (calls ~= 3 or sim:steps() ~= 60) then
+    error("the run did not resume at step 30: " .. calls .. " callbacks, at step " .. sim:steps())
+  end
+end
+paddy.result{steps = sim:steps()}
+)lua";
+
+const char* scriptOf(unsigned scenario) { return scenario == 0 ? kScript : kMeshScript; }
+
 // The contact-model plugins stay loaded for the whole process: each run loads and unloads them,
 // and libFuzzer keeps writing the coverage counters of every instrumented library it has seen,
 // so an unloaded plugin would crash it. A second reference (RTLD_NODELETE) keeps each mapped.
@@ -82,19 +125,24 @@ void pinPlugins() {
   }
 }
 
-const Model& baseModel() {
-  static const Model m = [] {
+Model writeBase(unsigned scenario) {
+  const std::string base = (scratchDir() / ("base_checkpoint_" + std::to_string(scenario) + ".h5")).string();
+  const auto r = runFixedScript("checkpoint", scriptOf(scenario), {{"checkpoint", base}, {"write", "1"}});
+  if (r.code != paddy::lua::kExitOk) {
+    std::fprintf(stderr, "writing the base checkpoint of scenario %u failed: %s\n", scenario, r.err.c_str());
+    std::abort();
+  }
+  return readModel(base);
+}
+
+const Model& baseModel(unsigned scenario) {
+  static const Model* models = [] {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // HDF5's own error stacks would flood the log
     pinPlugins();
-    const std::string base = (scratchDir() / "base_checkpoint.h5").string();
-    const auto r = runFixedScript("checkpoint", kScript, {{"checkpoint", base}, {"write", "1"}});
-    if (r.code != paddy::lua::kExitOk) {
-      std::fprintf(stderr, "writing the base checkpoint failed: %s\n", r.err.c_str());
-      std::abort();
-    }
-    return readModel(base);
+    static Model m[2] = {writeBase(0), writeBase(1)};
+    return m;
   }();
-  return m;
+  return models[scenario];
 }
 
 // The input, read as operations.
@@ -262,9 +310,10 @@ std::string mustRefuse(Model& m) {
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const Model& base = baseModel();
-  Model m = base;
   Bytes in(data, size);
+  const unsigned scenario = in.byte() % 2;
+  const Model& base = baseModel(scenario);
+  Model m = base;
   for (int ops = 0; in.more() && ops < 16; ++ops) apply(m, in);
   const std::string path = (scratchDir() / "checkpoint.h5").string();
   std::filesystem::remove(path + ".tmp");
@@ -273,7 +322,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string refuse = mustRefuse(m);
   std::vector<std::pair<std::string, std::string>> sets = {{"checkpoint", path}};
   if (unchanged) sets.emplace_back("expect_resumed", "1");
-  const auto r = runFixedScript("checkpoint", kScript, sets, /*instability_allowed=*/true);
+  const auto r = runFixedScript("checkpoint", scriptOf(scenario), sets, /*instability_allowed=*/true);
   if (r.code == paddy::lua::kExitInput) requireNamesFile(r.err, path);
   if (unchanged && r.code != paddy::lua::kExitOk) {
     std::fprintf(stderr, "the unchanged checkpoint was not accepted: %s\n", r.err.c_str());
