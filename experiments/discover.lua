@@ -182,11 +182,17 @@ local outcome = {input = input, parameters = P, layout = L, measured = y, fixed 
 -- the free parameters' box (a Latin-hypercube-like design: point k puts parameter j at the centre
 -- of stratum (k·(2j − 1)) mod n of its range; any effect strength stays as in the start), every
 -- point at the start's seed. When the fit's dimensions hold more than the free parameters (the
--- recalibration with an effect), start_scan more points spread the same way over every dimension,
--- the effect's strength included: the score test's strength is linear in the effect and a strong
--- one (wall adhesion that lifts the mud with the cone) is underestimated by far, so the refit must
--- not start only at it. Returns the best point and the scan's record.
-local function scan_start(stage, start, weights, dims)
+-- recalibration with an effect, its strength the last dimension), 2·start_scan + 1 more points
+-- follow the valley along which the free parameters absorb the effect (`valley`): the
+-- calibration moved θ by β·λ to absorb an effect of strength λ, with β = (JᵀΣ⁻¹J)⁻¹JᵀΣ⁻¹g the
+-- least-squares fit of the effect's signature g by the free parameters' Jacobian J, so the truth
+-- lies near θ(λ) = θ̂ − β·λ. Point k = 0…n puts λ at λ̂ + k/n·(high − λ̂) and θ at θ(λ) (clipped
+-- to the box); points k = 1…n add to θ half a stratum (1/(2n) of each range), alternately up and
+-- down, for the curvature of the valley. The score test's strength λ̂ is linear in the effect and
+-- a strong one (wall adhesion that lifts the mud with the cone) is underestimated by far, so the
+-- refit must not start only at it; nor at a strength paired with a θ that has absorbed none of it.
+-- Returns the best point and the scan's record.
+local function scan_start(stage, start, weights, dims, valley)
   if S.start_scan <= 0 or p == 0 then return start, nil end
   local n = S.start_scan
   local pts = {copy_point(start)}
@@ -204,7 +210,22 @@ local function scan_start(stage, start, weights, dims)
     q.label = stage .. " scan " .. k
     pts[#pts + 1] = q
   end
-  if dims and #dims > #theta_only then
+  if dims and #dims > #theta_only and valley then
+    local ld = dims[#dims]
+    local function clip(v, d) return math.min(d.hi, math.max(d.lo, v)) end
+    for k = 0, n do
+      local lam = valley.lambda + k / n * (ld.hi - valley.lambda)
+      for side = 0, (k > 0 and 1 or 0) do
+        local q = ld.set(copy_point(start), lam)
+        for j, d in ipairs(theta_only) do
+          local offset = side == 1 and (k % 2 == 1 and 1 or -1) * (d.hi - d.lo) / (2 * n) or 0
+          q = d.set(q, clip(valley.theta[j] - valley.beta[j] * lam + offset, d))
+        end
+        q.label = stage .. " scan " .. #pts
+        pts[#pts + 1] = q
+      end
+    end
+  elseif dims and #dims > #theta_only then
     for k = 1, n do
       local q = spread(copy_point(start), k, dims)
       q.label = stage .. " scan " .. (n + k)
@@ -221,7 +242,7 @@ local function scan_start(stage, start, weights, dims)
   say("   start scan of %d point(s): best %s, RMS residual %.3g", #pts, fmt_point(pts[best_k]), best_rms)
   local best = copy_point(pts[best_k])
   best.label = nil
-  return best, record
+  return best, record, pts, fs
 end
 -- Gauss-Newton with step control over `dims` from the point `start` (the calibration and the
 -- recalibration with an effect). Every point runs at start.seed (common random numbers), so the
@@ -230,9 +251,14 @@ end
 -- steps, when the next step would move no coordinate by more than S.converge of its range, or when
 -- no halving helps, and returns the best point run with its f, Jacobian, residual and the
 -- Gauss-Newton step computed there (its se), every point run (`history`) and the start scan (`scan`).
-local function fit(stage, start, dims, weights)
-  local scan
-  start, scan = scan_start(stage, start, weights, dims)
+-- The recalibration with an effect (`valley` given) with settings.refit = "surface" (the default)
+-- does not step from one seed's differences: it fits a quadratic response surface through the
+-- start scan's points (paddy.doe.response_surface) and takes the point of the box where the
+-- surface fits the measurements best, with the surface's linearised se; Gauss-Newton from the
+-- best scan point remains the fallback when the scan cannot determine a surface.
+local function fit(stage, start, dims, weights, valley)
+  local scan, scan_pts, scan_fs
+  start, scan, scan_pts, scan_fs = scan_start(stage, start, weights, dims, valley)
   local history = {}
   local lo, hi = {}, {}
   for j, d in ipairs(dims) do lo[j], hi[j] = d.lo, d.hi end
@@ -241,6 +267,19 @@ local function fit(stage, start, dims, weights)
     local pt = copy_point(start)
     for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
     return pt
+  end
+  if valley and S.refit == "surface" and scan_pts then
+    local X = {}
+    for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
+    local ok, rs = pcall(doe.response_surface, {points = X, values = scan_fs, measured = y, covariance = weights, lower = lo, upper = hi})
+    if ok then
+      local pt = at(rs.x)
+      say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", #X, fmt_point(pt), rs.misfit_predicted)
+      return {x = rs.x, point = pt, step = {se = rs.se}, history = history, scan = scan,
+              surface = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
+                         at_bound = rs.at_bound, points = #X}}
+    end
+    say("   no response surface (%s): Gauss-Newton from the best scan point", tostring(rs))
   end
   local x, best, it, tries = coords(start), nil, 0, 0
   while true do
@@ -378,9 +417,10 @@ for k, c in ipairs(cands) do
 end
 -- The decision's thresholds: bootstrap null trials of the fitted noise model (Sigma re-estimated
 -- from S.replicates draws in every trial), or the chi^2 tables. n_avg: seeds behind a simulated value.
-local function thresholds(n_avg, candidates)
+local function thresholds(n_avg, candidates, seed_covariance, replicates)
   if S.thresholds ~= "bootstrap" then return {} end
-  return doe.bootstrap_thresholds{seed_covariance = noise.seed_covariance, replicates = S.replicates, n_avg = n_avg, sigma = ones,
+  return doe.bootstrap_thresholds{seed_covariance = seed_covariance or noise.seed_covariance, replicates = replicates or S.replicates,
+                                  n_avg = n_avg, sigma = ones,
                                   jacobian = J_diag, candidates = candidates, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                   trials = S.bootstrap_trials, seed = seed0}
 end
@@ -421,8 +461,13 @@ if named then
   say("4. recalibration with %s (start %.4g)%s", named, lam, tentative and ": tried, its linearised remainder being significant" or "")
   -- The free parameters were calibrated without the effect and have absorbed part of it: fit's
   -- start scan re-scans them with the effect at its estimated strength.
-  local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov)
-  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = best.history, scan = best.scan}
+  local zeros = {}
+  for j = 1, p do zeros[j] = 0 end
+  local beta = doe.gauss_newton{theta = zeros, residual = signatures[named], jacobian = J, covariance = cov, damping = 0}.step
+  local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov,
+                   {theta = theta, beta = beta, lambda = lam})
+  local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = best.history, scan = best.scan,
+                 surface = best.surface, method = best.surface and "surface" or "gauss_newton"}
   local last = best.step or {}
   local conf_points = {}
   for k = 1, S.confirm_seeds do
@@ -431,10 +476,29 @@ if named then
   local conf, conf_results = evaluate("confirmation", conf_points)
   local f_after = stack.mean(conf)
   local r1 = stack.minus(y, f_after)
-  local noise_after = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = n_eff(S.confirm_seeds)}
+  -- The seed scatter after: the replicates' and the confirmation runs' deviations from their own
+  -- means, pooled (a strong effect can scatter the pile more than the calibrated model did: mud
+  -- that sticks to the lifted cone lets go at a random moment). Scaled by sqrt((N-1)/(N-2)), the
+  -- pooled deviations' sample covariance is the pooled within-group estimator on N - 2 degrees of
+  -- freedom; the bootstrap thresholds draw the same number of effective replicates.
+  local pooled = {}
+  do
+    local N = #reps + #conf
+    local scale = math.sqrt((N - 1) / (N - 2))
+    for _, group in ipairs({reps, conf}) do
+      local mean = stack.mean(group)
+      for _, x in ipairs(group) do
+        local d = {}
+        for i = 1, m do d[i] = scale * (x[i] - mean[i]) end
+        pooled[#pooled + 1] = d
+      end
+    end
+  end
+  local noise_after = doe.noise_covariance{replicates = #conf >= 2 and pooled or reps, sigma = ones, n_avg = n_eff(S.confirm_seeds)}
   local rest = {}
   for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
-  local thr_after = #rest > 0 and thresholds(n_eff(S.confirm_seeds), rest) or {}
+  local thr_after = #rest > 0 and thresholds(n_eff(S.confirm_seeds), rest, noise_after.seed_covariance,
+                                             #conf >= 2 and #pooled - 1 or S.replicates) or {}
   local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J_diag, candidates = rest,
                                                 labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                                 z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,

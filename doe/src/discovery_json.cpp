@@ -5,6 +5,7 @@
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/gauss_newton.hpp"
 #include "paddy/doe/null_calibration.hpp"
+#include "paddy/doe/response_surface.hpp"
 
 #include <cmath>
 #include <fmt/format.h>
@@ -258,6 +259,24 @@ json gaussNewtonJson(const json& o) {
          {"rank", s.rank}, {"misfit_predicted", s.misfitPredicted}, {"iterations", s.iterations}};
   j["at_bound"] = json::array();
   for (int b : s.atBound) j["at_bound"].push_back(b < 0 ? "lower" : b > 0 ? "upper" : "");
+  return j;
+}
+
+json responseSurfaceJson(const json& o) {
+  requireObject(o);
+  ResponseSurfaceInput in;
+  in.points = matrix(required(o, "points"), "points");
+  in.values = matrix(required(o, "values"), "values");
+  in.measured = vector(required(o, "measured"), "measured");
+  in.covariance = covarianceOf(o, in.measured.size(), true);
+  in.lower = vector(required(o, "lower"), "lower");
+  in.upper = vector(required(o, "upper"), "upper");
+  const ResponseSurfaceFit f = fitResponseSurface(in);
+  json j{{"x", toJson(f.x)}, {"predicted", toJson(f.predicted)}, {"jacobian", toJson(f.jacobian)}, {"covariance", toJson(f.covariance)},
+         {"se", toJson(f.se)}, {"residual_sd", toJson(f.residualSd)}, {"misfit_predicted", f.misfitPredicted}, {"terms", f.terms},
+         {"coefficients", toJson(f.coefficients)}};
+  j["at_bound"] = json::array();
+  for (int b : f.atBound) j["at_bound"].push_back(b < 0 ? "lower" : b > 0 ? "upper" : "");
   return j;
 }
 

@@ -364,6 +364,7 @@ int lSurrogate(lua_State* L) { return wrap<surrogate>(L, "surrogate_suggest"); }
 int lNoiseCovariance(lua_State* L) { return wrap<noiseCovarianceJson>(L, "noise_covariance"); }
 int lDiagnose(lua_State* L) { return wrap<diagnoseJson>(L, "diagnose"); }
 int lGaussNewton(lua_State* L) { return wrap<gaussNewtonJson>(L, "gauss_newton"); }
+int lResponseSurface(lua_State* L) { return wrap<responseSurfaceJson>(L, "response_surface"); }
 int lCompareFits(lua_State* L) { return wrap<compareFitsJson>(L, "compare_fits"); }
 int lNullThresholds(lua_State* L) { return wrap<nullThresholdsJson>(L, "null_thresholds"); }
 int lBootstrapThresholds(lua_State* L) { return wrap<bootstrapThresholdsJson>(L, "bootstrap_thresholds"); }
@@ -380,6 +381,7 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"noise_covariance", paddy::doe::lNoiseCovariance},
                                  {"diagnose", paddy::doe::lDiagnose},
                                  {"gauss_newton", paddy::doe::lGaussNewton},
+                                 {"response_surface", paddy::doe::lResponseSurface},
                                  {"compare_fits", paddy::doe::lCompareFits},
                                  {"null_thresholds", paddy::doe::lNullThresholds},
                                  {"bootstrap_thresholds", paddy::doe::lBootstrapThresholds},

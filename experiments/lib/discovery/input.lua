@@ -129,7 +129,7 @@ function M.read(path)
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
-                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan"}
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
   for k in pairs(s) do
@@ -171,6 +171,12 @@ function M.read(path)
   S.converge = number(path, "settings.converge", s.converge or 0.01, 0, 0.5)
   -- ... from the best of its start and start_scan points spread over the free parameters' box.
   S.start_scan = number(path, "settings.start_scan", s.start_scan or 4, 0, 100)
+  -- The recalibration with an effect: a response surface through its start scan (default) or
+  -- Gauss-Newton steps from the scan's best point (docs/discovery.md, step 4).
+  S.refit = s.refit or "surface"
+  if S.refit ~= "surface" and S.refit ~= "gauss_newton" then
+    fail(path, string.format("settings.refit = '%s': allowed surface, gauss_newton", tostring(S.refit)))
+  end
   input.settings = S
   return input
 end

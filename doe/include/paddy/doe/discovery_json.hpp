@@ -5,6 +5,9 @@
 //   diagnoseJson        {residual, covariance | sigma, jacobian, candidates, labels, blocks, alpha, ...}
 //   gaussNewtonJson     {theta, residual, jacobian, covariance | sigma, lower, upper, damping}
 //   compareFitsJson     {q_before, q_after, df, n, k_before, k_after}
+//   responseSurfaceJson {points, values, measured, covariance | sigma, lower, upper}
+//                       -> {x, predicted, jacobian, covariance, se, residual_sd, misfit_predicted, terms, coefficients, at_bound}
+//                       (response_surface.hpp)
 //   nullThresholdsJson  {z_max = {...}, q0 = {...}, q_after = {...}, alpha}
 //   bootstrapThresholdsJson {seed_covariance, replicates, n_avg, sigma, jacobian, candidates, alpha, trials, seed}
 //                       -> the same fields as nullThresholdsJson (bootstrap_null.hpp)
@@ -22,6 +25,7 @@ nlohmann::json diagnosisToJson(const Diagnosis& d);
 nlohmann::json diagnoseJson(const nlohmann::json& in);
 nlohmann::json gaussNewtonJson(const nlohmann::json& in);
 nlohmann::json compareFitsJson(const nlohmann::json& in);
+nlohmann::json responseSurfaceJson(const nlohmann::json& in);
 nlohmann::json nullThresholdsJson(const nlohmann::json& in);
 nlohmann::json bootstrapThresholdsJson(const nlohmann::json& in);
 
