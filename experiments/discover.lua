@@ -417,11 +417,11 @@ for k, c in ipairs(cands) do
 end
 -- The decision's thresholds: bootstrap null trials of the fitted noise model (Sigma re-estimated
 -- from S.replicates draws in every trial), or the chi^2 tables. n_avg: seeds behind a simulated value.
-local function thresholds(n_avg, candidates, seed_covariance, replicates)
+local function thresholds(n_avg, candidates, seed_covariance, replicates, jacobian)
   if S.thresholds ~= "bootstrap" then return {} end
   return doe.bootstrap_thresholds{seed_covariance = seed_covariance or noise.seed_covariance, replicates = replicates or S.replicates,
                                   n_avg = n_avg, sigma = ones,
-                                  jacobian = J_diag, candidates = candidates, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
+                                  jacobian = jacobian or J_diag, candidates = candidates, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                   trials = S.bootstrap_trials, seed = seed0}
 end
 local thr = thresholds(n_eff(S.replicates), dcands)
@@ -495,11 +495,33 @@ if named then
     end
   end
   local noise_after = doe.noise_covariance{replicates = #conf >= 2 and pooled or reps, sigma = ones, n_avg = n_eff(S.confirm_seeds)}
+  -- The resolution shift at the refit point: the same runs as step 2's, with the effect added
+  -- (the shift a finer model makes depends on the model: wall adhesion acts through the spheres
+  -- that touch the cone, whose number per area the sphere size sets). It replaces step 2's
+  -- nuisance column in the diagnosis after.
+  local J_after, resolution_after = J_diag, nil
+  if S.resolution_factor > 0 then
+    local d_fine = P.particle_diameter * S.resolution_factor
+    local res_points = {}
+    for k = 1, S.resolution_seeds do
+      res_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 300 + k, diameter = d_fine,
+                       label = "resolution after " .. k}
+    end
+    local b = stack.minus(stack.mean(evaluate("resolution after", res_points)), f_after)
+    J_after = {}
+    for i = 1, m do
+      J_after[i] = {}
+      for j = 1, p do J_after[i][j] = J[i][j] end
+      J_after[i][p + 1] = b[i]
+    end
+    resolution_after = {diameter = d_fine, seeds = S.resolution_seeds, rms = stack.rms_standardised(b, noise_after.covariance)}
+    say("   resolution shift at the refit point: RMS %.3g noise sd", resolution_after.rms)
+  end
   local rest = {}
   for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
   local thr_after = #rest > 0 and thresholds(n_eff(S.confirm_seeds), rest, noise_after.seed_covariance,
-                                             #conf >= 2 and #pooled - 1 or S.replicates) or {}
-  local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J_diag, candidates = rest,
+                                             #conf >= 2 and #pooled - 1 or S.replicates, J_after) or {}
+  local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J_after, candidates = rest,
                                                 labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                                 z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
                                                 q_after_threshold = thr_after.q_after_threshold} or nil
@@ -507,7 +529,7 @@ if named then
   after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
                                             high = math.min(c.high, joint.lambda + 1.96 * se), se = se},
            joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
-           rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results}
+           rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results, resolution = resolution_after}
   if diag_after then
     after.comparison = doe.compare_fits{q_before = diag.misfit, q_after = diag_after.misfit, df = 1, n = m, k_before = p, k_after = p + 1}
   end
@@ -516,7 +538,21 @@ if named then
   local z = {}
   for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
   after.z = z
-  if tentative then
+  -- The refit must confirm the effect: a strength below the candidate's smallest relevant one (or
+  -- 0 when none is given) means the joint fit did not need it, and the screening's misfit was the
+  -- calibration's (nothing significant left: `none`) or another effect's (`unknown`).
+  local weak = joint.lambda <= (c.relevant or 0)
+  if weak then
+    local left = diag_after and diag_after.q0_significant
+    diag.decision = left and "unknown" or "none"
+    diag.reason = string.format("%s was %s, but its refit put its strength at %.4g, not above its smallest relevant strength %.4g; ",
+                                named, tentative and "tried" or "named", joint.lambda, c.relevant or 0)
+                  .. (left and "a significant misfit is left" or "the misfit left is not significant")
+    diag.named = nil
+    outcome.tried, after = after, nil
+    named = nil
+    say("   decision after the recalibration: %s (the refit did not need %s)", diag.decision, c.name)
+  elseif tentative then
     if diag_after and not diag_after.q0_significant then
       diag.decision, diag.named = "effect", named
       diag.reason = named .. " passes and lies in its range; its linearised remainder was significant, the misfit left after "
