@@ -369,6 +369,16 @@ say("   RMS standardised residual %.3g (seed scatter shrinkage %.3g)", outcome.l
 -- at θ̂ (mean of resolution_seeds runs minus the replicates' mean). Added to the Jacobian as a
 -- nuisance column: a misfit along it is what refining the model would change, never evidence of
 -- a missing effect.
+-- J with the resolution shift b as a last (nuisance) column.
+local function with_resolution_column(b)
+  local Jb = {}
+  for i = 1, m do
+    Jb[i] = {}
+    for j = 1, p do Jb[i][j] = J[i][j] end
+    Jb[i][p + 1] = b[i]
+  end
+  return Jb
+end
 local J_diag = J
 if S.resolution_factor > 0 then
   local d_fine = P.particle_diameter * S.resolution_factor
@@ -379,12 +389,7 @@ if S.resolution_factor > 0 then
   end
   local fine = evaluate("resolution", res_points)
   local b = stack.minus(stack.mean(fine), f_bar)
-  J_diag = {}
-  for i = 1, m do
-    J_diag[i] = {}
-    for j = 1, p do J_diag[i][j] = J[i][j] end
-    J_diag[i][p + 1] = b[i]
-  end
+  J_diag = with_resolution_column(b)
   local bias = {}
   for i, l in ipairs(L) do bias[i] = {label = l.label, shift = b[i] * l.sigma, z = b[i] / math.sqrt(cov[i][i])} end
   outcome.resolution = {diameter = d_fine, seeds = S.resolution_seeds, shift = bias,
@@ -508,12 +513,7 @@ if named then
                        label = "resolution after " .. k}
     end
     local b = stack.minus(stack.mean(evaluate("resolution after", res_points)), f_after)
-    J_after = {}
-    for i = 1, m do
-      J_after[i] = {}
-      for j = 1, p do J_after[i][j] = J[i][j] end
-      J_after[i][p + 1] = b[i]
-    end
+    J_after = with_resolution_column(b)
     resolution_after = {diameter = d_fine, seeds = S.resolution_seeds, rms = stack.rms_standardised(b, noise_after.covariance)}
     say("   resolution shift at the refit point: RMS %.3g noise sd", resolution_after.rms)
   end

@@ -29,12 +29,32 @@ using namespace paddy::fuzz;
 
 namespace {
 
-const char* const kScript = R"lua(
+// The parameters and the run both scenarios share: write the checkpoint at step 30, or resume from it.
+const char* const kParameters = R"lua(
 local P = paddy.parameters{
   checkpoint = {default = "", type = "string", description = "checkpoint file (absolute path)"},
   write = {default = 0, type = "integer", min = 0, max = 1, description = "1: only write the checkpoint at step 30"},
   expect_resumed = {default = 0, type = "integer", min = 0, max = 1, description = "1: the run must resume at step 30"},
 }
+)lua";
+const char* const kRun = R"lua(
+if P.write == 1 then
+  sim:run{steps = 30, progress = false}
+  sim:checkpoint(P.checkpoint)
+else
+  -- A callback every 10 steps: 3 calls when the run resumed at step 30, 6 when it started afresh.
+  local calls = 0
+  sim:run{steps = 60, progress = false, checkpoint = P.checkpoint, checkpoint_every = 20 * sim:timestep(),
+          every_steps = 10, callback = function() calls = calls + 1 end}
+  if P.expect_resumed == 1 and (calls ~= 3 or sim:steps() ~= 60) then
+    error("the run did not resume at step 30: " .. calls .. " callbacks, at step " .. sim:steps())
+  end
+end
+paddy.result{steps = sim:steps()}
+)lua";
+
+// The pile on a plane floor.
+const char* const kPile = R"lua(
 local sim = paddy.simulation{threads = 1}
 local a = sim:material{name = "a", density = 2500, shear_modulus = 1e6, poisson = 0.3}
 local b = sim:material{name = "b", density = 1500, shear_modulus = 2e6, poisson = 0.4}
@@ -53,28 +73,10 @@ for i = 0, 1 do
     sim:add_particle{pos = {0.00099 + 0.00198 * i, 0.00099 + 0.00198 * j, 0.00239}, radius = 0.001, material = b}
   end
 end
-if P.write == 1 then
-  sim:run{steps = 30, progress = false}
-  sim:checkpoint(P.checkpoint)
-else
-  -- A callback every 10 steps: 3 calls when the run resumed at step 30, 6 when it started afresh.
-  local calls = 0
-  sim:run{steps = 60, progress = false, checkpoint = P.checkpoint, checkpoint_every = 20 * sim:timestep(),
-          every_steps = 10, callback = function() calls = calls + 1 end}
-  if P.expect_resumed == 1 and (calls ~= 3 or sim:steps() ~= 60) then
-    error("the run did not resume at step 30: " .. calls .. " callbacks, at step " .. sim:steps())
-  end
-end
-paddy.result{steps = sim:steps()}
 )lua";
 
-// The mesh-wall scenario: the same parameters and resume check.
-const char* const kMeshScript = R"lua(
-local P = paddy.parameters{
-  checkpoint = {default = "", type = "string", description = "checkpoint file (absolute path)"},
-  write = {default = 0, type = "integer", min = 0, max = 1, description = "1: only write the checkpoint at step 30"},
-  expect_resumed = {default = 0, type = "integer", min = 0, max = 1, description = "1: the run must resume at step 30"},
-}
+// The mesh-wall scenario.
+const char* const kCupAndLid = R"lua(
 local sim = paddy.simulation{threads = 1}
 local mud = sim:material{name = "mud", density = 1680, shear_modulus = 1e6, poisson = 0.5}
 local steel = sim:material{name = "steel", density = 7800, shear_modulus = 7e9, poisson = 0.3}
@@ -92,21 +94,9 @@ for k = 0, 5 do
 end
 sim:add_particle{pos = {0, 0, 0.00101}, radius = 0.001, material = mud}
 sim:add_particle{pos = {0, 0, 0.00299}, radius = 0.001, material = mud}
-if P.write == 1 then
-  sim:run{steps = 30, progress = false}
-  sim:checkpoint(P.checkpoint)
-else
-  local calls = 0
-  sim:run{steps = 60, progress = false, checkpoint = P.checkpoint, checkpoint_every = 20 * sim:timestep(),
-          every_steps = 10, callback = function() calls = calls + 1 end}
-  if P.expect_resumed == 1 and (calls ~= 3 or sim:steps() ~= 60) then
-    error("the run did not resume at step 30: " .. calls .. " callbacks, at step " .. sim:steps())
-  end
-end
-paddy.result{steps = sim:steps()}
 )lua";
 
-const char* scriptOf(unsigned scenario) { return scenario == 0 ? kScript : kMeshScript; }
+std::string scriptOf(unsigned scenario) { return std::string(kParameters) + (scenario == 0 ? kPile : kCupAndLid) + kRun; }
 
 // The contact-model plugins stay loaded for the whole process: each run loads and unloads them,
 // and libFuzzer keeps writing the coverage counters of every instrumented library it has seen,
