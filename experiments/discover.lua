@@ -531,7 +531,9 @@ if named then
            joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
            rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results, resolution = resolution_after}
   if diag_after then
-    after.comparison = doe.compare_fits{q_before = diag.misfit, q_after = diag_after.misfit, df = 1, n = m, k_before = p, k_after = p + 1}
+    -- diagnose's misfit is an RMS, sqrt(Q / m); the likelihood ratio compares the Q themselves.
+    after.comparison = doe.compare_fits{q_before = diag.misfit ^ 2 * m, q_after = diag_after.misfit ^ 2 * m, df = 1, n = m,
+                                        k_before = p, k_after = p + 1}
   end
   say("   %s = %.4g [%.4g, %.4g]; RMS standardised residual %.3g -> %.3g", named, after.strength.value, after.strength.low,
       after.strength.high, outcome.located.rms, after.rms)
@@ -539,14 +541,19 @@ if named then
   for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
   after.z = z
   -- The refit must confirm the effect: a strength below the candidate's smallest relevant one (or
-  -- 0 when none is given) means the joint fit did not need it, and the screening's misfit was the
-  -- calibration's (nothing significant left: `none`) or another effect's (`unknown`).
+  -- 0 when none is given) means the joint fit did not need it, and so does a misfit at the new
+  -- seeds that is not significantly smaller than before (likelihood ratio on 1 df at alpha); the
+  -- screening's misfit was then the calibration's (nothing significant left: `none`) or another
+  -- effect's (`unknown`).
   local weak = joint.lambda <= (c.relevant or 0)
-  if weak then
+  local no_gain = after.comparison ~= nil and not (after.comparison.p < S.alpha)
+  if weak or no_gain then
     local left = diag_after and diag_after.q0_significant
     diag.decision = left and "unknown" or "none"
-    diag.reason = string.format("%s was %s, but its refit put its strength at %.4g, not above its smallest relevant strength %.4g; ",
-                                named, tentative and "tried" or "named", joint.lambda, c.relevant or 0)
+    diag.reason = (weak and string.format("%s was %s, but its refit put its strength at %.4g, not above its smallest relevant strength %.4g; ",
+                                          named, tentative and "tried" or "named", joint.lambda, c.relevant or 0)
+                   or string.format("%s was %s, but adding it did not lower the misfit significantly (likelihood ratio %.3g, p = %.3g); ",
+                                    named, tentative and "tried" or "named", after.comparison.lr, after.comparison.p))
                   .. (left and "a significant misfit is left" or "the misfit left is not significant")
     diag.named = nil
     outcome.tried, after = after, nil
