@@ -2,7 +2,11 @@
 # kill -9 of a single simulation, then a restart: it resumes from the last periodic checkpoint of
 # sim:run and ends in the same state hash as an uninterrupted run (docs/reliability.md).
 #   kill_resume.sh PADDY WORK TRIALS
-# Trial k kills the run at a moment k·37 ms after its first checkpoint appeared.
+# A timing run measures D, the time from the first checkpoint's appearance to the run's end on
+# this machine; trial k kills the run at a seeded random moment u_k · 0.9 D after its first
+# checkpoint appeared (u_k uniform in [0, 1), awk's generator seeded with 1000 + k), so the kills
+# spread over the whole run whatever the machine's speed. With 10 or more trials at least 90 % of
+# them must be killed mid-run (a run that ends first is not counted).
 set -euo pipefail
 paddy="$1"; work="$2"; trials="${3:-2}"
 here="$(cd "$(dirname "$0")" && pwd)"
@@ -16,19 +20,31 @@ field() { grep -o "\"$2\": *[\"0-9a-f]*" "$1" | head -1 | sed 's/.*: *//; s/"//g
 want="$(field whole/result.json hash)"
 [ -n "$want" ] || { echo "the uninterrupted run gave no hash" >&2; exit 1; }
 echo "uninterrupted: $want"
+now() { date +%s.%N; }
+wait_for_checkpoint() {  # $1 output directory, $2 pid
+  for ((i = 0; i < 6000; ++i)); do
+    [ -f "$1/pile.h5" ] && return 0
+    kill -0 "$2" 2>/dev/null || return 1
+    sleep 0.005
+  done
+  return 1
+}
+"$paddy" run "$script" --out timing "${args[@]}" >/dev/null 2>timing.log &
+pid=$!
+wait_for_checkpoint timing $pid || { echo "the timing run wrote no checkpoint" >&2; exit 1; }
+t0="$(now)"
+wait $pid || { cat timing.log >&2; echo "the timing run failed" >&2; exit 1; }
+span="$(awk -v a="$t0" -v b="$(now)" 'BEGIN{printf "%.4f", b - a}')"
+echo "from the first checkpoint to the end: $span s"
 
 resumed=0
 for ((k = 0; k < trials; ++k)); do
   out="trial_$k"
   "$paddy" run "$script" --out "$out" "${args[@]}" >/dev/null 2>"$out.log" &
   pid=$!
-  # Wait for the first checkpoint (k·37 ms later), then kill without warning.
-  for ((i = 0; i < 6000; ++i)); do
-    [ -f "$out/pile.h5" ] && break
-    kill -0 $pid 2>/dev/null || break
-    sleep 0.01
-  done
-  sleep "$(awk -v k=$k 'BEGIN{printf "%.3f", 0.037 * k}')"
+  # Wait for the first checkpoint, then kill without warning at the trial's moment.
+  wait_for_checkpoint "$out" $pid || true
+  sleep "$(awk -v k=$k -v d="$span" 'BEGIN{srand(1000 + k); printf "%.4f", rand() * 0.9 * d}')"
   if kill -9 $pid 2>/dev/null; then
     wait $pid 2>/dev/null || true
     if [ -f "$out/result.json" ]; then echo "trial $k: a killed run left a result.json" >&2; exit 1; fi
@@ -48,3 +64,6 @@ for ((k = 0; k < trials; ++k)); do
 done
 echo "kill_resume: $resumed of $trials trials killed and resumed to the same state"
 [ "$resumed" -ge 1 ] || { echo "no trial was killed mid-run: the run is too short for this machine" >&2; exit 1; }
+if [ "$trials" -ge 10 ] && [ $((10 * resumed)) -lt $((9 * trials)) ]; then
+  echo "only $resumed of $trials trials were killed mid-run (at least 90 % must be)" >&2; exit 1
+fi
