@@ -210,7 +210,7 @@ local function scan_start(stage, start, weights, dims, valley)
     q.label = stage .. " scan " .. k
     pts[#pts + 1] = q
   end
-  if dims and #dims > #theta_only and valley then
+  if valley then
     local ld = dims[#dims]
     local function clip(v, d) return math.min(d.hi, math.max(d.lo, v)) end
     for k = 0, n do
@@ -224,12 +224,6 @@ local function scan_start(stage, start, weights, dims, valley)
         q.label = stage .. " scan " .. #pts
         pts[#pts + 1] = q
       end
-    end
-  elseif dims and #dims > #theta_only then
-    for k = 1, n do
-      local q = spread(copy_point(start), k, dims)
-      q.label = stage .. " scan " .. (n + k)
-      pts[#pts + 1] = q
     end
   end
   local fs = evaluate(stage, pts)
@@ -275,7 +269,7 @@ local function fit(stage, start, dims, weights, valley)
     if ok then
       local pt = at(rs.x)
       say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", #X, fmt_point(pt), rs.misfit_predicted)
-      return {x = rs.x, point = pt, step = {se = rs.se}, history = history, scan = scan,
+      return {point = pt, step = {se = rs.se}, history = history, scan = scan,
               surface = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
                          at_bound = rs.at_bound, points = #X}}
     end
@@ -368,28 +362,29 @@ say("   RMS standardised residual %.3g (seed scatter shrinkage %.3g)", outcome.l
 -- Resolution bias: the observables' shift from the particle diameter to resolution_factor x it
 -- at θ̂ (mean of resolution_seeds runs minus the replicates' mean). Added to the Jacobian as a
 -- nuisance column: a misfit along it is what refining the model would change, never evidence of
--- a missing effect.
--- J with the resolution shift b as a last (nuisance) column.
-local function with_resolution_column(b)
+-- a missing effect. resolution_shift runs them at a model point (θ, the effects' strengths λ)
+-- and returns b = their mean minus f_ref (the mean at the workflow's diameter there) and J with b
+-- as a last column; step 4 calls it again at the refit point.
+local d_fine = P.particle_diameter * S.resolution_factor
+local function resolution_shift(stage, at_theta, lambda, f_ref)
+  local points = {}
+  for k = 1, S.resolution_seeds do
+    points[k] = {theta = at_theta, lambda = lambda, seed = seed0 + 300 + k, diameter = d_fine, label = stage .. " " .. k}
+  end
+  local b = stack.minus(stack.mean(evaluate(stage, points)), f_ref)
   local Jb = {}
   for i = 1, m do
     Jb[i] = {}
     for j = 1, p do Jb[i][j] = J[i][j] end
     Jb[i][p + 1] = b[i]
   end
-  return Jb
+  return b, Jb
 end
 local J_diag = J
 if S.resolution_factor > 0 then
-  local d_fine = P.particle_diameter * S.resolution_factor
   say("   resolution bias: %d run(s) at %.4g m", S.resolution_seeds, d_fine)
-  local res_points = {}
-  for k = 1, S.resolution_seeds do
-    res_points[k] = {theta = theta, lambda = {}, seed = seed0 + 300 + k, diameter = d_fine, label = "resolution " .. k}
-  end
-  local fine = evaluate("resolution", res_points)
-  local b = stack.minus(stack.mean(fine), f_bar)
-  J_diag = with_resolution_column(b)
+  local b
+  b, J_diag = resolution_shift("resolution", theta, {}, f_bar)
   local bias = {}
   for i, l in ipairs(L) do bias[i] = {label = l.label, shift = b[i] * l.sigma, z = b[i] / math.sqrt(cov[i][i])} end
   outcome.resolution = {diameter = d_fine, seeds = S.resolution_seeds, shift = bias,
@@ -506,14 +501,8 @@ if named then
   -- nuisance column in the diagnosis after.
   local J_after, resolution_after = J_diag, nil
   if S.resolution_factor > 0 then
-    local d_fine = P.particle_diameter * S.resolution_factor
-    local res_points = {}
-    for k = 1, S.resolution_seeds do
-      res_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 300 + k, diameter = d_fine,
-                       label = "resolution after " .. k}
-    end
-    local b = stack.minus(stack.mean(evaluate("resolution after", res_points)), f_after)
-    J_after = with_resolution_column(b)
+    local b
+    b, J_after = resolution_shift("resolution after", joint.theta, {[named] = joint.lambda}, f_after)
     resolution_after = {diameter = d_fine, seeds = S.resolution_seeds, rms = stack.rms_standardised(b, noise_after.covariance)}
     say("   resolution shift at the refit point: RMS %.3g noise sd", resolution_after.rms)
   end
