@@ -9,6 +9,11 @@
 # Each trial starts it, kills the runner and every job it runs with SIGKILL at a seeded random
 # moment in [0, 1.05 T] (T: the uninterrupted run's time), starts it again until it completes,
 # and requires:
+#   (WHEN = write: not at that moment but in the first file write that any of its processes begins
+#   after it. The run is started with PADDY_STOP_WRITING_AT = that moment, so the process stops
+#   itself (SIGSTOP) half way through the write, its temporary half written or not yet renamed
+#   (paddy/io/atomic_file.hpp); the trial kills it there, and requires the temporary to exist at
+#   the kill. A run that ends before it writes again is not counted.)
 #   * it completes, and its results equal the uninterrupted run's (stages: result.json,
 #     stage1.json, summary.json and every job's results, compare_runs.lua; calibration: every
 #     check of tests/calibration/check_calibration.lua and result.json identical); every JSON
@@ -17,7 +22,7 @@
 #     pile.json, snapshots: MD5 taken at the kill);
 #   * every HDF5 file opens (h5ls) and every job's snapshots hold the same data as the
 #     uninterrupted run's (h5diff).
-#   campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED] [MODE]
+#   campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED] [MODE] [WHEN]   (WHEN: random, default, or write)
 set -euo pipefail
 paddy=${1:?usage: campaign_kill.sh PADDY SOURCE_DIR WORK_DIR TRIALS [SEED]}
 src=${2:?}
@@ -25,6 +30,8 @@ work=${3:?}
 trials=${4:-3}
 seed=${5:-17}
 mode=${6:-stages}
+when=${7:-random}
+case "$when" in random | write) ;; *) echo "campaign_kill: unknown kill moment '$when' (random, write)" >&2; exit 2 ;; esac
 here="$src/tests/reliability"
 case "$mode" in
   stages)
@@ -87,17 +94,39 @@ gone() {  # the process has ended (a zombie counts as ended: its parent may be g
 }
 
 declare -A phases=()
-killed=0 with_tmp=0 jobs_killed=0 restarts=0 stale_tmp=0
+killed=0 with_tmp=0 jobs_killed=0 restarts=0 stale_tmp=0 in_runner=0
 for ((k = 0; k < trials; ++k)); do
   out="trial_$k"
   delay=$(awk -v s="$seed" -v k="$k" -v T="$T" 'BEGIN { srand(s * 1000 + k); printf "%.3f", rand() * 1.05 * T }')
-  setsid "$paddy" run "$driver" --out "$out" "${args[@]}" > "$out.first.log" 2>&1 &
-  pid=$!
-  sleep "$delay"
-  if ! kill -STOP -- "-$pid" 2> /dev/null; then
-    wait "$pid" || true
-    echo "trial $k: the campaign ended before the kill at $delay s (not counted)"
-    continue
+  writer=""
+  if [ "$when" = write ]; then
+    at=$(awk -v t="$(now)" -v d="$delay" 'BEGIN { printf "%.3f", t + d }')
+    PADDY_STOP_WRITING_AT=$at setsid "$paddy" run "$driver" --out "$out" "${args[@]}" > "$out.first.log" 2>&1 &
+    pid=$!
+    # Until one of its processes has stopped itself in a write, or the run has ended.
+    until gone "$pid"; do
+      for q in "$pid" $(pgrep -P "$pid" || true); do
+        [ "$(awk '{print $3}' "/proc/$q/stat" 2> /dev/null)" = T ] && { writer=$q; break; }
+      done
+      [ -n "$writer" ] && break
+      sleep 0.01
+    done
+    if [ -z "$writer" ]; then
+      wait "$pid" || true
+      echo "trial $k: the campaign wrote nothing after $delay s (not counted)"
+      continue
+    fi
+    kill -STOP -- "-$pid" 2> /dev/null || true
+    [ "$writer" = "$pid" ] && writer="the runner" || writer="a job"
+  else
+    setsid "$paddy" run "$driver" --out "$out" "${args[@]}" > "$out.first.log" 2>&1 &
+    pid=$!
+    sleep "$delay"
+    if ! kill -STOP -- "-$pid" 2> /dev/null; then
+      wait "$pid" || true
+      echo "trial $k: the campaign ended before the kill at $delay s (not counted)"
+      continue
+    fi
   fi
   # Frozen: the runner cannot start another job. Record, then SIGKILL the runner's process group
   # and the group of every job it runs.
@@ -117,7 +146,16 @@ for ((k = 0; k < trials; ++k)); do
   killed=$((killed + 1))
   jobs_killed=$((jobs_killed + n_kids))
   label="$phase"
-  [ "$tmp_now" -gt 0 ] && { label="$phase, a file being written"; with_tmp=$((with_tmp + 1)); }
+  if [ "$tmp_now" -gt 0 ]; then
+    being=$(find "$out" -name '*.tmp*' -printf '%f\n' 2> /dev/null | sed 's/\.tmp\.[0-9]*$//' | sort -u | paste -sd, -)
+    label="$phase, a file being written: $being"
+    with_tmp=$((with_tmp + 1))
+  fi
+  if [ -n "$writer" ]; then
+    [ "$tmp_now" -gt 0 ] || fail "trial $k: $writer stopped in a write, but no temporary file exists"
+    label="$label by $writer"
+    [ "$writer" = "the runner" ] && in_runner=$((in_runner + 1))
+  fi
   phases[$phase]=$(( ${phases[$phase]:-0} + 1 ))
   # Start it again until it completes (a restart that fails by itself is an error).
   runs=0
@@ -163,6 +201,7 @@ done
 echo "campaign_kill: $killed of $trials trials killed with SIGKILL and completed with the uninterrupted result" \
      "($jobs_killed running jobs killed, $restarts restarts, $with_tmp kills while a temporary file existed," \
      "$stale_tmp stale temporaries left); $(elapsed "$start") s in all"
+[ "$when" = write ] && echo "  killed in a write: $killed ($in_runner by the runner, $((killed - in_runner)) by a job)"
 for p in "${!phases[@]}"; do
   echo "  killed during $p: ${phases[$p]}"
 done

@@ -4,7 +4,13 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <limits>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -35,9 +41,29 @@ void ensureParent(const fs::path& path) {
                            "'): " + std::strerror(err));
 }
 
-}  // namespace
+// PADDY_STOP_WRITING_AT (see the header): the moment (Unix time, s) from which this process stops
+// in its next atomic write; NaN = never. Read at every write (writes are few; a forked process
+// sees its own environment).
+double stopWritingAt() {
+  const char* v = std::getenv("PADDY_STOP_WRITING_AT");
+  if (!v || !*v) return std::numeric_limits<double>::quiet_NaN();
+  char* end = nullptr;
+  const double x = std::strtod(v, &end);
+  return (*end == '\0' && std::isfinite(x)) ? x : std::numeric_limits<double>::quiet_NaN();
+}
+std::atomic<bool> stopped_in_write{false};
 
-void produceFileAtomic(const fs::path& path, const std::function<void(const fs::path&)>& write) {
+// The test hook's place: the caller has its temporary open or written, not renamed.
+void writeFaultPoint() {
+  const double at = stopWritingAt();
+  if (!(at == at)) return;  // NaN: unset
+  const double now = std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+  if (now >= at && !stopped_in_write.exchange(true)) std::raise(SIGSTOP);
+}
+
+// produceFileAtomic; `fault_point`: the test hook's stop here (writeFileAtomic stops inside its own
+// write instead).
+void produce(const fs::path& path, const std::function<void(const fs::path&)>& write, bool fault_point) {
   ensureParent(path);
   const fs::path tmp = temporaryFor(path);
   try {
@@ -54,6 +80,7 @@ void produceFileAtomic(const fs::path& path, const std::function<void(const fs::
     fs::remove(tmp, ignored);
     throw;
   }
+  if (fault_point) writeFaultPoint();
   std::error_code ec;
   fs::rename(tmp, path, ec);
   if (ec) {
@@ -63,14 +90,28 @@ void produceFileAtomic(const fs::path& path, const std::function<void(const fs::
   }
 }
 
+}  // namespace
+
+void produceFileAtomic(const fs::path& path, const std::function<void(const fs::path&)>& write) {
+  produce(path, write, true);
+}
+
 void writeFileAtomic(const fs::path& path, std::string_view content) {
-  produceFileAtomic(path, [&](const fs::path& tmp) {
+  produce(path, [&](const fs::path& tmp) {
     // POSIX calls rather than a stream: every failure keeps its errno for the message.
     const int fd = ::open(tmp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
     if (fd < 0) fail("create", path, tmp, errno);
+    // In two halves: the write fault point (header) falls between them.
+    const std::size_t half = content.size() / 2;
     std::size_t done = 0;
+    bool counted = false;
     while (done < content.size()) {
-      const ssize_t n = ::write(fd, content.data() + done, content.size() - done);
+      if (done == half && !counted) {
+        counted = true;
+        writeFaultPoint();
+      }
+      const std::size_t upto = done < half ? half : content.size();
+      const ssize_t n = ::write(fd, content.data() + done, upto - done);
       if (n < 0 && errno == EINTR) continue;
       if (n <= 0) {  // EFBIG past `ulimit -f` (SIGXFSZ is ignored by paddy), ENOSPC, EIO, ...
         const int err = n < 0 ? errno : EIO;
@@ -79,8 +120,9 @@ void writeFileAtomic(const fs::path& path, std::string_view content) {
       }
       done += static_cast<std::size_t>(n);
     }
+    if (content.empty()) writeFaultPoint();
     if (::close(fd) != 0) fail("write", path, tmp, errno);
-  });
+  }, false);
 }
 
 bool isTemporaryName(std::string_view filename) {

@@ -11,6 +11,13 @@ namespace paddy::io {
 
 // Writes `content` to `path` atomically; creates parent directories. Throws std::runtime_error
 // naming the file on failure (the temporary is removed).
+//
+// Test hook (tests/reliability/campaign_kill.sh, kill moment "write"): with PADDY_STOP_WRITING_AT
+// = a Unix time in seconds in the environment, a process stops itself (SIGSTOP) in the first
+// atomic write it begins at or after that moment, once: writeFileAtomic with half of the content
+// in the temporary, produceFileAtomic with the temporary written but not yet renamed. The test
+// then kills it with SIGKILL there, i.e. while a file is being written. Unset, empty or not a
+// number: no effect.
 void writeFileAtomic(const std::filesystem::path& path, std::string_view content);
 
 // Calls `write(tmp_path)` to produce the file under a temporary name, then renames it to `path`.
