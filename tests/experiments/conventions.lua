@@ -121,4 +121,24 @@ t.conventions = "liggghts"
 ok, msg = pcall(input_file.read, paddy.write_json("cal_bad.json", t))
 check(not ok and msg:find("conventions = liggghts", 1, true) and msg:find("cal_bad.json", 1, true), "bad input conventions: %s", tostring(msg))
 
+-- The shipped EDEM-conventions input (calibration/paddy_mud_edem.json) is paddy_mud.json with
+-- conventions = edem: the same targets, tolerance, factors and designs.
+local cal_dir = mud.materials_file:gsub("materials/paddy_mud%.json$", "calibration/")
+local plain, edem = input_file.read(cal_dir .. "paddy_mud.json"), input_file.read(cal_dir .. "paddy_mud_edem.json")
+check(plain.conventions == "paddy" and edem.conventions == "edem", "shipped inputs: conventions %s, %s", plain.conventions, edem.conventions)
+local function same(a, b, path)
+  if type(a) ~= type(b) then error(string.format("paddy_mud_edem.json differs from paddy_mud.json at %s", path)) end
+  if type(a) ~= "table" then
+    check(a == b, "paddy_mud_edem.json differs from paddy_mud.json at %s: %s against %s", path, tostring(b), tostring(a))
+    return
+  end
+  for k, v in pairs(a) do same(v, b[k], path .. "." .. tostring(k)) end
+  for k in pairs(b) do check(a[k] ~= nil, "paddy_mud_edem.json has %s.%s, paddy_mud.json not", path, tostring(k)) end
+end
+for _, key in ipairs({"measured", "tolerance", "factors", "screening", "steepest_ascent", "box_behnken", "verification",
+                      "surrogate", "rheometer", "experiment"}) do
+  check(plain[key] ~= nil, "paddy_mud.json has no %s", key)
+  same(plain[key], edem[key], key)
+end
+
 paddy.result{ok = true}

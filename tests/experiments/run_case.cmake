@@ -425,6 +425,26 @@ elseif(CASE STREQUAL "validation_ys")
     message(FATAL_ERROR "one fill level: expected a refusal, got: ${se}")
   endif()
 
+elseif(CASE STREQUAL "validation_rs")
+  # The rheometer's steady-torque study on tiny runs (20 mm spheres, 2 speeds, 2 seeds, the steady
+  # criterion and fixed 0.3 s steps): every run finishes, the files exist, and the summary agrees
+  # with the per-step table (check_validation_rs.lua).
+  run_paddy(code se run ${SOURCE}/experiments/validation/rheometer_steady.lua --out out --threads 1
+            --set diameters=0.02 --set step_times=0,0.3 --set seeds=1,2 --set max_parallel=2 --set code_version=test
+            "--set" "rheometer_set=speeds_rpm=10\;40,max_step_time=1,startup_angle=20,settle_max_time=0.8")
+  expect_code(${code} 0)
+  foreach(f rs_steps.csv rs_runs.csv rs_summary.csv rheometer_steady.json rs_torques.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  run_paddy(code se run ${HERE}/check_validation_rs.lua --set dir=${WORK}/out --out check)
+  expect_code(${code} 0)
+  # A negative step length is refused with the allowed range.
+  run_paddy(code se run ${SOURCE}/experiments/validation/rheometer_steady.lua --out bad --set step_times=-1)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "step_times: -1 s is outside the allowed range 0-100 s")
+    message(FATAL_ERROR "the refusal does not name step_times and its range: ${se}")
+  endif()
+
 elseif(CASE STREQUAL "validation_cg")
   # The coarse-graining campaign on 2 sizes x 2 seeds of tiny released columns: per-size mean and
   # std, the tests and the pictures.
