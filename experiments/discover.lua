@@ -262,6 +262,26 @@ local function fit(stage, start, dims, weights, valley)
     for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
     return pt
   end
+  -- The calibration (no valley): Gauss-Newton starts at the best point of a quadratic response
+  -- surface through the scan. At a few hundred spheres one seed's misfit is rough in θ: the
+  -- scan's best single point can sit a stratum away from the optimum, and forward differences at
+  -- one seed there can call it converged. The surface through all scan points averages that
+  -- noise. With fewer scan points than a quadratic has coefficients it starts at the best point.
+  local surface_start
+  if not valley and S.calibration_start == "surface" and scan_pts then
+    local X = {}
+    for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
+    local ok, rs = pcall(doe.response_surface, {points = X, values = scan_fs, measured = y, covariance = weights, lower = lo, upper = hi})
+    if ok then
+      local pt = at(rs.x)
+      say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g; Gauss-Newton starts there",
+          #X, fmt_point(pt), rs.misfit_predicted)
+      surface_start = {theta = pt.theta, misfit_predicted = rs.misfit_predicted, at_bound = rs.at_bound, points = #X}
+      start = pt
+    else
+      say("   no response surface (%s): Gauss-Newton starts at the best scan point", tostring(rs))
+    end
+  end
   if valley and S.refit == "surface" and scan_pts then
     local X = {}
     for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
@@ -314,7 +334,7 @@ local function fit(stage, start, dims, weights, valley)
     end
     ::continue::
   end
-  best.history, best.scan = history, scan
+  best.history, best.scan, best.surface_start = history, scan, surface_start
   return best
 end
 
@@ -327,7 +347,7 @@ local calib = {}
 say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), at most %d Gauss-Newton iteration(s)",
     p, m, #input.experiments, S.iterations)
 local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m))
-calib.iterations, calib.scan = cal.history, cal.scan
+calib.iterations, calib.scan, calib.surface_start = cal.history, cal.scan, cal.surface_start
 theta = cal.point.theta
 local J, f_hat = cal.J, cal.f
 calib.theta = theta

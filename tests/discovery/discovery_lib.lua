@@ -120,10 +120,12 @@ t = good(); t.extra = 1; bad(t, "unknown key 'extra' %(allowed:")
 t = good(); t.settings = {iteration = 3}; bad(t, "unknown key 'settings%.iteration' %(allowed: iterations,")
 t = good(); t.settings = {resolution_factor = 0.3}; bad(t, "settings%.resolution_factor = 0%.3: allowed 0 %(off%) or 0%.5 to 0%.99")
 t = good(); t.settings = {refit = "newton"}; bad(t, "settings%.refit = 'newton': allowed surface, gauss_newton")
+t = good(); t.settings = {calibration_start = "best"}; bad(t, "settings%.calibration_start = 'best': allowed surface, best_scan")
 t = good(); t.settings = {measured_repeats = -1}; bad(t, "settings%.measured_repeats = %-1 is outside the allowed range")
 t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 2 is outside the allowed range %[3,")
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
-      and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4 and g.settings.refit == "surface", "defaults of the start scan, the refit, step control, specimen scatter, resolution and strong margin")
+      and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4 and g.settings.refit == "surface"
+      and g.settings.calibration_start == "surface", "defaults of the start scan, the calibration's start, the refit, step control, specimen scatter, resolution and strong margin")
 t = good(); t.candidates = {}; bad(t, "'candidates' must be a non%-empty list")
 t = good(); t.candidates[1].relevant = 0.3; bad(t, "candidates%[1%]%.relevant = 0%.3 must be below high = 0%.3")
 t = good(); t.candidates[1].relevant = -0.01; bad(t, "candidates%[1%]%.relevant = %-0%.01 is outside the allowed range %[0, 0%.3%]")

@@ -129,7 +129,8 @@ function M.read(path)
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
-                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit"}
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit",
+                   "calibration_start"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
   for k in pairs(s) do
@@ -176,6 +177,13 @@ function M.read(path)
   S.refit = s.refit or "surface"
   if S.refit ~= "surface" and S.refit ~= "gauss_newton" then
     fail(path, string.format("settings.refit = '%s': allowed surface, gauss_newton", tostring(S.refit)))
+  end
+  -- Where the calibration's Gauss-Newton starts: the best point of a quadratic response surface
+  -- through its start scan (default; the surface averages the scan points' seed noise) or the
+  -- scan's best single point (docs/discovery.md, step 1).
+  S.calibration_start = s.calibration_start or "surface"
+  if S.calibration_start ~= "surface" and S.calibration_start ~= "best_scan" then
+    fail(path, string.format("settings.calibration_start = '%s': allowed surface, best_scan", tostring(S.calibration_start)))
   end
   input.settings = S
   return input

@@ -79,6 +79,7 @@ function M.summary(o, files)
              measured_repeats = o.input.settings.measured_repeats},
     resolution = o.resolution,
     calibration = o.calibration.iterations,
+    calibration_start = o.calibration.surface_start,
     simulations = #o.simulations,
     wall_time_s = o.wall_time_s,
     particle_diameter = o.parameters.particle_diameter,
@@ -209,8 +210,16 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
     rows[#rows + 1] = {num(it.iteration) .. ((it.backtrack or 0) > 0 and string.format(" (step halved %d×)", it.backtrack) or ""),
                        table.concat(t, ", "), num(it.rms_sigma), it.accepted == false and "rejected" or "accepted"}
   end
+  local ss = o.calibration.surface_start
+  local start_text = ""
+  if ss then
+    local t = {}
+    for j, f in ipairs(o.input.free_parameters) do t[#t + 1] = esc(f.parameter) .. " = " .. num(ss.theta[j]) end
+    start_text = string.format("; it starts at the best point of a quadratic response surface through %s scan points, %s (predicted RMS %s)",
+                               num(ss.points), table.concat(t, ", "), num(ss.misfit_predicted))
+  end
   add(table_html({"iteration", "parameters", "RMS residual [measurement sd], one seed", "step"}, rows,
-                 "Gauss-Newton on forward differences, common random numbers; a step that raises the misfit is halved"))
+                 "Gauss-Newton on forward differences, common random numbers; a step that raises the misfit is halved" .. start_text))
   if o.resolution then
     rows = {}
     for _, r in ipairs(o.resolution.shift) do rows[#rows + 1] = {esc(r.label), num(r.shift), num(r.z, 3)} end
