@@ -49,6 +49,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "steady_windows", default = 6, type = "integer", min = 3, max = 100, description = "steady criterion: the last this many windows are compared; the steady torque is their mean"},
   {name = "trend_alpha", default = 0.05, min = 1e-6, max = 0.5, description = "steady criterion: level of the t test for a trend of the window means"},
   {name = "drift_tolerance", default = 0.05, min = 1e-4, max = 1, description = "steady criterion: largest fitted change over the compared windows, relative to their mean"},
+  {name = "steady_confirm", default = false, description = "steady criterion: the stretch of steady_windows windows before the compared one must pass the criterion too, with a mean within 2 standard errors of it (a step cannot end in one chance quiet stretch of a stick-slip torque)"},
   {name = "fit_unsteady", default = false, description = "fit Herschel-Bulkley to the steps that did not become steady too (the fit then says so)"},
   {name = "startup_rpm", default = 5, unit = "rpm", min = 0, max = 100, description = "start-up (stress-growth) test before the sweep at this speed (0: none)"},
   {name = "startup_angle", default = 90, unit = "deg", min = 1, max = 3600, description = "rotation of the start-up test"},
@@ -221,6 +222,35 @@ local function steady_torque(angles, torques)
   for k, v in pairs(criterion) do c[k] = v end
   return measure.steady_torque(c)
 end
+-- steady_confirm: the criterion on the steady_windows windows before the compared ones (the
+-- samples up to their end), and whether its mean agrees with the compared windows' within two
+-- combined standard errors. A step that ended in the first quiet stretch of a fluctuating torque
+-- fails it. → confirmed, reason (nil when confirmed).
+local function confirm(angles, torques, v)
+  local cut = (math.floor(angles[#angles] / window) - P.steady_windows) * window
+  local a, t = {}, {}
+  for k = 1, #angles do
+    if angles[k] <= cut + 1e-12 then a[#a + 1], t[#t + 1] = angles[k], torques[k] end
+  end
+  if #a < 2 then return false, "no stretch before the compared windows to confirm them" end
+  local u = steady_torque(a, t)
+  if not u.steady then return false, "the stretch before the compared windows is not steady (" .. u.reason .. ")" end
+  local tol = 2 * math.sqrt(u.standard_error ^ 2 + v.standard_error ^ 2)
+  if math.abs(u.mean - v.mean) > tol then
+    return false, string.format("the stretch before has mean %.4g N m, the compared windows %.4g (more than 2 standard errors apart)", u.mean, v.mean)
+  end
+  return true, nil
+end
+-- The criterion on a step's samples, with the confirmation when asked for.
+local function judged(angles, torques)
+  local v = steady_torque(angles, torques)
+  if v.steady and P.steady_confirm then
+    local ok, why = confirm(angles, torques, v)
+    if not ok then v.steady, v.reason = false, why end
+    v.confirmed = ok
+  end
+  return v
+end
 -- step_time = 0: the step ends when its torque is steady, judged at each completed window.
 local function steady_step(step)
   local function angle() return step:last().angle end
@@ -229,7 +259,7 @@ local function steady_step(step)
     trigger.named("steady", function()
       local a = angle()
       if math.floor(a / window) < P.steady_windows or a < criterion.min_angle then return false end
-      return steady_torque(step:column("angle"), step:column("torque")).steady
+      return judged(step:column("angle"), step:column("torque")).steady
     end),
   }
 end
@@ -238,12 +268,12 @@ local function speed_step(rpm, phase_name)
   local every = math.min(P.sample_interval, window / w / P.samples_per_window)
   local angles, torques, t0, t1 = turn(rpm, P.step_time > 0 and P.step_time or P.max_step_time, every, phase_name,
                                        P.step_time == 0 and steady_step or nil)
-  local v = steady_torque(angles, torques)
+  local v = judged(angles, torques)
   if not v.steady then
     io.stderr:write(string.format("warning: rheometer: %s %g rpm not steady after %.3g s (%.0f deg): %s\n", phase_name, rpm,
                                   t1 - t0, math.deg(v.angle), v.reason))
   end
-  return {speed_rpm = rpm, omega = w, steady = v.steady, not_steady_because = v.steady and nil or v.reason,
+  return {speed_rpm = rpm, omega = w, steady = v.steady, confirmed = v.confirmed, not_steady_because = v.steady and nil or v.reason,
           torque_Nm = v.mean, torque_se = v.standard_error, trend_Nm_per_rev = v.trend * 2 * math.pi,
           trend_se_Nm_per_rev = v.trend_standard_error * 2 * math.pi, trend_p = v.trend_p_value, drift = v.drift,
           windows = v.compared_windows, angle_deg = math.deg(v.angle), duration_s = t1 - t0, t_from = t1 - v.compared_windows * window / w,
@@ -414,7 +444,7 @@ paddy.result{
   hysteresis = P.down_sweep and hysteresis or nil,
   steady_criterion = {step_time = P.step_time, max_step_time = P.max_step_time, min_step_angle_deg = P.min_step_angle,
                       window_angle_deg = P.window_angle, windows = P.steady_windows, trend_alpha = P.trend_alpha,
-                      drift_tolerance = P.drift_tolerance},
+                      drift_tolerance = P.drift_tolerance, confirm = P.steady_confirm},
   startup = startup,
   yield_stress_Pa = startup and startup.yield_stress_Pa or nil,  -- vane start-up peak (Nguyen & Boger 1983)
   herschel_bulkley = fit,

@@ -33,6 +33,16 @@ function(expect_file path)
   endif()
 endfunction()
 
+# The miniature rheometer run of rheometer_mini and rheometer_confirm: ~600 spheres of 12 mm, a
+# short start-up, three speeds up and two down, each until steady by a coarse criterion or 0.3 s.
+set(rheometer_mini_args
+    --set particle_diameter=0.012 --set speeds_rpm=20,40,80 --set max_step_time=0.3
+    --set min_step_angle=30 --set window_angle=5 --set steady_windows=4 --set fit_unsteady=true
+    --set startup_rpm=10 --set startup_angle=12
+    --set settle_max_time=0.6 --set min_rest_time=0.1 --set sample_interval=0.005
+    --set snapshot_interval=0 --set vane_diameter=0.05 --set vane_height=0.06
+    --set vane_bottom=0.03 --set fill_level=0.12 --set cup_diameter=0.1 --set mud_density=1680)
+
 if(CASE STREQUAL "measure_binding")
   run_paddy(code se run ${HERE}/measure_binding.lua --out out --threads 1)
   expect_code(${code} 0)
@@ -242,12 +252,7 @@ elseif(CASE STREQUAL "rheometer_mini")
   # step called steady must pass its own criterion, and the Herschel-Bulkley fit (told to use
   # unsteady steps too) must count the unsteady ones.
   run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
-            --set particle_diameter=0.012 --set speeds_rpm=20,40,80 --set max_step_time=0.3
-            --set min_step_angle=30 --set window_angle=5 --set steady_windows=4 --set fit_unsteady=true
-            --set startup_rpm=10 --set startup_angle=12
-            --set settle_max_time=0.6 --set min_rest_time=0.1 --set sample_interval=0.005
-            --set snapshot_interval=0 --set vane_diameter=0.05 --set vane_height=0.06
-            --set vane_bottom=0.03 --set fill_level=0.12 --set cup_diameter=0.1 --set mud_density=1680)
+            ${rheometer_mini_args})
   expect_code(${code} 0)
   result(factor vane torque_factor_m3)
   expect_number(${factor} GREATER 3.0097e-4 "vane torque factor [m^3]")
@@ -425,6 +430,33 @@ elseif(CASE STREQUAL "validation_ys")
     message(FATAL_ERROR "one fill level: expected a refusal, got: ${se}")
   endif()
 
+elseif(CASE STREQUAL "rheometer_confirm")
+  # rheometer_mini's run with steady_confirm: a step is steady only when the stretch of
+  # steady_windows windows before the compared ones passes the criterion too, so no step can be
+  # steady before min_step_angle + steady_windows x window_angle = 30 + 4 x 5 = 50 deg. (Without the
+  # option this run's 80 rpm step is steady at 35 deg, so a rheometer that ignored it fails here.)
+  run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
+            ${rheometer_mini_args}
+            --set pictures=false --set steady_confirm=true)
+  expect_code(${code} 0)
+  result(confirm steady_criterion confirm)
+  if(NOT confirm)
+    message(FATAL_ERROR "result.json steady_criterion.confirm is '${confirm}', expected true")
+  endif()
+  foreach(k 0 1 2)
+    result(steady steps ${k} steady)
+    result(angle steps ${k} angle_deg)
+    result(tstep steps ${k} duration_s)
+    if(steady)
+      result(confirmed steps ${k} confirmed)
+      if(NOT confirmed)
+        message(FATAL_ERROR "step ${k} is steady but not confirmed")
+      endif()
+      expect_number(${angle} GREATER 49.999 "confirmed steady step ${k}: angle turned")
+    else()
+      expect_number(${tstep} GREATER 0.2999 "unsteady step ${k} ran max_step_time")
+    endif()
+  endforeach()
 elseif(CASE STREQUAL "validation_rs")
   # The rheometer's steady-torque study on tiny runs (20 mm spheres, 2 speeds, 2 seeds, the steady
   # criterion and fixed 0.3 s steps): every run finishes, the files exist, and the summary agrees
