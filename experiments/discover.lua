@@ -262,6 +262,14 @@ local function fit(stage, start, dims, weights, valley)
     for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
     return pt
   end
+  -- The quadratic response surface through the start scan's points (paddy.doe.response_surface):
+  -- ok, its result (or the error) and the number of points.
+  local function scan_surface()
+    local X = {}
+    for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
+    local ok, rs = pcall(doe.response_surface, {points = X, values = scan_fs, measured = y, covariance = weights, lower = lo, upper = hi})
+    return ok, rs, #X
+  end
   -- The calibration (no valley): Gauss-Newton starts at the best point of a quadratic response
   -- surface through the scan. At a few hundred spheres one seed's misfit is rough in θ: the
   -- scan's best single point can sit a stratum away from the optimum, and forward differences at
@@ -269,29 +277,25 @@ local function fit(stage, start, dims, weights, valley)
   -- noise. With fewer scan points than a quadratic has coefficients it starts at the best point.
   local surface_start
   if not valley and S.calibration_start == "surface" and scan_pts then
-    local X = {}
-    for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
-    local ok, rs = pcall(doe.response_surface, {points = X, values = scan_fs, measured = y, covariance = weights, lower = lo, upper = hi})
+    local ok, rs, npts = scan_surface()
     if ok then
       local pt = at(rs.x)
       say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g; Gauss-Newton starts there",
-          #X, fmt_point(pt), rs.misfit_predicted)
-      surface_start = {theta = pt.theta, misfit_predicted = rs.misfit_predicted, at_bound = rs.at_bound, points = #X}
+          npts, fmt_point(pt), rs.misfit_predicted)
+      surface_start = {theta = pt.theta, misfit_predicted = rs.misfit_predicted, at_bound = rs.at_bound, points = npts}
       start = pt
     else
       say("   no response surface (%s): Gauss-Newton starts at the best scan point", tostring(rs))
     end
   end
   if valley and S.refit == "surface" and scan_pts then
-    local X = {}
-    for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
-    local ok, rs = pcall(doe.response_surface, {points = X, values = scan_fs, measured = y, covariance = weights, lower = lo, upper = hi})
+    local ok, rs, npts = scan_surface()
     if ok then
       local pt = at(rs.x)
-      say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", #X, fmt_point(pt), rs.misfit_predicted)
+      say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", npts, fmt_point(pt), rs.misfit_predicted)
       return {point = pt, step = {se = rs.se}, history = history, scan = scan,
               surface = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
-                         at_bound = rs.at_bound, points = #X}}
+                         at_bound = rs.at_bound, points = npts}}
     end
     say("   no response surface (%s): Gauss-Newton from the best scan point", tostring(rs))
   end
