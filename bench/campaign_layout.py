@@ -19,6 +19,9 @@ Usage (from the repository root):
 """
 import argparse, datetime, json, os, platform, resource, statistics, subprocess, sys, tempfile, time, glob, shutil
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import quiet_machine  # noqa: E402
+
 ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("-l", "--layouts", default="2x1 1x2", help="layouts 'RUNSxTHREADS', space separated")
 ap.add_argument("-j", "--jobs", type=int, default=4, help="slump runs per batch")
@@ -46,31 +49,8 @@ def layouts():
     return out
 
 
-def cpu_times():
-    with open("/proc/stat") as f:
-        v = [int(x) for x in f.readline().split()[1:]]
-    idle = v[3] + v[4]
-    return sum(v), idle
-
-
-def busy_cpus():
-    """CPUs in use by other processes, measured over one second."""
-    t0, i0 = cpu_times()
-    time.sleep(1.0)
-    t1, i1 = cpu_times()
-    total = t1 - t0
-    return 0.0 if total <= 0 else (1.0 - (i1 - i0) / total) * os.cpu_count()
-
-
 def quiet_check():
-    busy, waited = busy_cpus(), 0.0
-    while waited < a.wait and busy > 0.5:
-        time.sleep(4.0)
-        waited += 5.0
-        busy = busy_cpus()
-    if waited > 0:
-        print(f"  waited {waited:.0f} s for a quiet machine (busy CPUs now {busy:.2f})", file=sys.stderr)
-    return busy
+    return quiet_machine.wait_for_quiet(a.wait)
 
 
 def one_batch(runs, threads, rep):
@@ -103,7 +83,7 @@ def one_batch(runs, threads, rep):
     share = cpu / usable if usable > 0 else None
     return {"layout": f"{runs}x{threads}", "max_parallel": runs, "threads_per_job": threads, "repeat": rep,
             "wall_s": wall, "cpu_s": cpu, "cpu_share": share, "busy_cpus_before": busy,
-            "contended": busy > 0.5 or (share is not None and share < 0.85),
+            "contended": busy > quiet_machine.LIMIT or (share is not None and share < 0.85),
             "jobs_per_hour": a.jobs / wall * 3600.0, "jobs": jobs}
 
 

@@ -13,11 +13,22 @@ Inside the two runs the time spent in measurement callbacks (measure_slump, meas
 is reported separately ("callbacks_in_runs"). The thread counts are interleaved (repeat, threads)
 so that load from other users spreads over all of them; medians and ranges are printed.
 
+Variants (-V NAME=ARGS, repeatable) time several settings of the same binary in one interleaved
+run (repeat, variant, threads; the variants' order reversed every other repeat), e.g. a rule on and
+off. Before each run the CPUs busy with other work are measured (bench/quiet_machine.py) and the
+run waits up to -w seconds for a quiet machine; a run is flagged "contended" when more than 0.5 CPU
+was busy before it or it got less than 85 % of the CPU its threads could use, and the medians are
+taken over the uncontended runs when there are any.
+
 Usage (from the repository root):
-  bench/slump_phases.py [-t "1 2"] [-r 3] [-o bench/results/slump_phases.json] [-b build/bin/paddy]
-                        [-- --set name=value ...]   (slump.lua's parameters, e.g. max_time)
+  bench/slump_phases.py [-t "1 2"] [-r 3] [-w 60] [-o bench/results/slump_phases.json] [-b build/bin/paddy]
+                        [-V "old=--set free_rest_window=0" -V "new="]
+                        [-- --set name=value ...]   (slump.lua's parameters for every run, e.g. max_time)
 """
-import argparse, json, os, resource, statistics, subprocess, sys, tempfile, time, datetime, platform
+import argparse, json, os, resource, shlex, statistics, subprocess, sys, tempfile, time, datetime, platform
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import quiet_machine  # noqa: E402
 
 ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
 ap.add_argument("-t", "--threads", default="1 2")
@@ -25,16 +36,32 @@ ap.add_argument("-r", "--repeats", type=int, default=3)
 ap.add_argument("-o", "--out", default="bench/results/slump_phases.json")
 ap.add_argument("-b", "--binary", default=os.environ.get("PADDY_BIN", "build/bin/paddy"))
 ap.add_argument("--label", default="", help="free text stored with the runs (e.g. the commit)")
+ap.add_argument("-w", "--wait", type=float, default=0, help="wait up to this many seconds for a quiet machine before each run")
+ap.add_argument("-V", "--variant", action="append", default=[],
+                help="NAME=ARGS: a variant timed in the same interleaved run (ARGS: more paddy run arguments)")
 ap.add_argument("extra", nargs="*", help="arguments passed to paddy run after --")
 a = ap.parse_args()
 
 PHASES = ["setup", "settle", "strike_off", "lift_and_rest", "final"]
 
 
-def one_run(threads, rep):
+def variants():
+    out = []
+    for v in a.variant:
+        name, sep, args = v.partition("=")
+        if not sep or not name.strip():
+            raise SystemExit(f"--variant: '{v}' is not NAME=ARGS (e.g. old=--set free_rest_window=0)")
+        if name in [n for n, _ in out]:
+            raise SystemExit(f"--variant: '{name}' given twice")
+        out.append((name.strip(), shlex.split(args)))
+    return out or [("", [])]
+
+
+def one_run(threads, rep, variant=("", [])):
     out = tempfile.mkdtemp(prefix=f"slump_t{threads}_r{rep}_")
     cmd = [a.binary, "run", "bench/slump_phases.lua", "--threads", str(threads), "--out", out,
-           "--set", "progress=false"] + a.extra
+           "--set", "progress=false"] + a.extra + variant[1]
+    busy = quiet_machine.wait_for_quiet(a.wait)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.monotonic()
     p = subprocess.Popen(cmd, stderr=subprocess.PIPE, stdout=subprocess.DEVNULL, text=True)
@@ -99,7 +126,10 @@ def one_run(threads, rep):
                 if r is not None:
                     return r
         return None
-    return {"threads": threads, "repeat": rep, "wall_s": wall, "cpu_s": cpu, "cpu_share": cpu / (wall * threads),
+    share = cpu / (wall * min(threads, os.cpu_count()))
+    return {"variant": variant[0], "variant_args": variant[1], "threads": threads, "repeat": rep,
+            "busy_cpus_before": busy, "contended": busy > quiet_machine.LIMIT or share < 0.85,
+            "wall_s": wall, "cpu_s": cpu, "cpu_share": share,
             "phases_s": phases, "cpu_phases_s": cpu_phases, "callbacks_in_runs_s": nested,
             "particles": find(res, "particles"), "steps": find(res, "steps"),
             "simulated_time_s": find(res, "simulated_time"), "run_wall_time_s": find(res, "run_wall_time"),
@@ -112,20 +142,26 @@ def one_run(threads, rep):
 
 def main():
     threads = [int(t) for t in a.threads.split()]
+    vs = variants()
     runs = []
     for rep in range(1, a.repeats + 1):
-        for t in threads:
-            print(f"[slump_phases] threads={t} repeat={rep}", file=sys.stderr, flush=True)
-            r = one_run(t, rep)
-            runs.append(r)
-            print(f"[slump_phases]   wall {r['wall_s']:.1f} s, cpu share {r['cpu_share']:.2f}, "
-                  + ", ".join(f"{k} {v:.1f}" for k, v in r["phases_s"].items()), file=sys.stderr, flush=True)
+        for v in (vs if rep % 2 == 1 else vs[::-1]):
+            for t in threads:
+                print(f"[slump_phases] {('variant=' + v[0] + ' ') if v[0] else ''}threads={t} repeat={rep}",
+                      file=sys.stderr, flush=True)
+                r = one_run(t, rep, v)
+                runs.append(r)
+                print(f"[slump_phases]   wall {r['wall_s']:.1f} s, cpu share {r['cpu_share']:.2f}, busy before "
+                      f"{r['busy_cpus_before']:.2f}{' CONTENDED' if r['contended'] else ''}, "
+                      + ", ".join(f"{k} {v:.1f}" for k, v in r["phases_s"].items()), file=sys.stderr, flush=True)
     summary = []
-    for t in threads:
-        rs = [r for r in runs if r["threads"] == t]
+    for (vname, _), t in [(v, t) for v in vs for t in threads]:
+        group = [r for r in runs if r["threads"] == t and r["variant"] == vname]
+        rs = [r for r in group if not r["contended"]] or group
         def stat(vals):
             return {"median": statistics.median(vals), "min": min(vals), "max": max(vals)}
-        summary.append({"threads": t, "runs": len(rs), "wall_s": stat([r["wall_s"] for r in rs]),
+        summary.append({"variant": vname, "threads": t, "runs": len(rs), "contended_left_out": len(group) - len(rs),
+                        "wall_s": stat([r["wall_s"] for r in rs]),
                         "phases_s": {p: stat([r["phases_s"][p] for r in rs]) for p in PHASES},
                         "cpu_phases_s": {p: stat([r["cpu_phases_s"][p] for r in rs if r["cpu_phases_s"]] or [float("nan")])
                                          for p in PHASES},
@@ -133,26 +169,30 @@ def main():
                         "callbacks_in_runs_s": stat([r["callbacks_in_runs_s"] for r in rs]),
                         "particle_steps_per_second": stat([r["particle_steps_per_second"] for r in rs]),
                         "cpu_share": stat([r["cpu_share"] for r in rs]),
+                        "simulated_time_s": stat([r["simulated_time_s"] for r in rs]),
+                        "slump_mm": sorted({r["slump_mm"] for r in rs}),
+                        "slump_flow_mm": sorted({r["slump_flow_mm"] for r in rs}),
                         "state_hashes": sorted({r["final_state_hash"] for r in rs})})
     doc = {"benchmark": "slump experiment, wall time per phase (bench/slump_phases.py)",
            "generated": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
-           "label": a.label, "arguments": a.extra, "host": {"logical_cpus": os.cpu_count(), "kernel": platform.release()},
+           "label": a.label, "arguments": a.extra, "variants": [{"name": n, "arguments": v} for n, v in vs],
+           "wait_s": a.wait, "host": {"logical_cpus": os.cpu_count(), "kernel": platform.release()},
            "summary": summary, "runs": runs}
     os.makedirs(os.path.dirname(a.out) or ".", exist_ok=True)
     json.dump(doc, open(a.out, "w"), indent=1)
-    print("| threads | runs | wall s (min-max) | " + " | ".join(PHASES) + " | callbacks in runs | M particle-steps/s |")
-    print("|---:|---:|---|" + "---:|" * (len(PHASES) + 2))
+    print("| variant | threads | runs | wall s (min-max) | " + " | ".join(PHASES) + " | callbacks in runs | M particle-steps/s |")
+    print("|---|---:|---:|---|" + "---:|" * (len(PHASES) + 2))
     for s in summary:
         f = lambda st: f"{st['median']:.1f} ({st['min']:.1f}-{st['max']:.1f})"
-        print(f"| {s['threads']} | {s['runs']} | {f(s['wall_s'])} | " + " | ".join(f(s["phases_s"][p]) for p in PHASES)
+        print(f"| {s['variant']} | {s['threads']} | {s['runs']} | {f(s['wall_s'])} | " + " | ".join(f(s["phases_s"][p]) for p in PHASES)
               + f" | {f(s['callbacks_in_runs_s'])} | {s['particle_steps_per_second']['median']/1e6:.3f} |")
     print()
     print("CPU seconds (all threads) per phase, median (min-max):")
-    print("| threads | cpu s | " + " | ".join(PHASES) + " |")
-    print("|---:|---|" + "---:|" * len(PHASES))
+    print("| variant | threads | cpu s | " + " | ".join(PHASES) + " |")
+    print("|---|---:|---|" + "---:|" * len(PHASES))
     for s in summary:
         f = lambda st: f"{st['median']:.1f} ({st['min']:.1f}-{st['max']:.1f})"
-        print(f"| {s['threads']} | {f(s['cpu_s'])} | " + " | ".join(f(s["cpu_phases_s"][p]) for p in PHASES) + " |")
+        print(f"| {s['variant']} | {s['threads']} | {f(s['cpu_s'])} | " + " | ".join(f(s["cpu_phases_s"][p]) for p in PHASES) + " |")
     print(f"written: {a.out}")
 
 

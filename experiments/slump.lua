@@ -12,7 +12,10 @@
 --    above the highest particle under it (the cone is then free of the pile; lifting it further
 --    would only cost time: 300 mm at 0.05 m/s = 6 s).
 -- 3. Run until the pile is at rest (RMS speed from the kinetic energy below rest_speed, at least
---    min_rest_time after the lift) or max_time after the start of the lift.
+--    min_rest_time after the lift) or max_time after the start of the lift. The run also ends,
+--    before the lift has cleared the pile, once the pile has been at rest and the cone free of mud
+--    (no load on it) over free_rest_window: from then on nothing can move the pile, and lifting
+--    the cone further would only cost time (the cone stops there).
 -- 4. Measure slump (300 mm − pile height at the axis), slump-flow (top-view image + circle fit,
 --    and ruler diameters), the pile profile h(r) and the slump history s(t).
 -- Coarse graining: spheres of particle_diameter d instead of the reference's 2 mm; the contact
@@ -55,6 +58,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "slump_tolerance", default = 0.001, unit = "m", min = 0, max = 0.1, description = "see rest_window (0: KE criterion only)"},
   {name = "min_rest_time", default = 0.3, unit = "s", min = 0, max = 10, description = "shortest run after settling start / after the lift before 'at rest' counts"},
   {name = "clearance", default = 0.02, unit = "m", min = 0, max = 0.3, description = "the lift stops this far above the pile top"},
+  {name = "free_rest_window", default = 0.1, unit = "s", min = 0, max = 10, description = "the run also ends once, over this window, the pile has been at rest (RMS speed below rest_speed at every history sample, slump steady within slump_tolerance) and no sphere has loaded the cone, even before the lift has cleared the pile; the cone stops there (0: only the rule after the lift stop; at least one history_interval)"},
   {name = "max_time", default = 5.0, unit = "s", min = 0.01, max = 60, description = "time limit from the start of the lift"},
   {name = "history_interval", default = 0.05, unit = "s", min = 0.001, max = 1, description = "slump history sampling"},
   {name = "load_interval", default = 0.005, unit = "s", min = 1e-5, max = 1, description = "sampling of the force on the cone during the lift (cone_force_N)"},
@@ -63,6 +67,12 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
   {name = "progress", default = true, description = "progress line on stderr"},
 }))
+
+if P.free_rest_window > 0 and P.free_rest_window < P.history_interval then
+  error(string.format("slump.lua: free_rest_window = %g s is shorter than history_interval = %g s: the window must "
+                      .. "span two history samples at least; allowed: 0 (off) or >= %g s", P.free_rest_window,
+                      P.history_interval, P.history_interval))
+end
 
 local wall_start = os.time()
 local d = P.particle_diameter
@@ -199,22 +209,31 @@ else
 end
 -- Slump history, sampled every history_interval; the spread as the final measurement reads it
 -- (image + circle fit; milliseconds per sample).
+local load_seen = 0  -- cone load samples already looked at by the history
+local function cone_load_since_last()
+  if not cone then return nil end
+  return observables.largest_load(sim:wall_load_history(cone), load_seen, function(n) load_seen = n end)
+end
 local history = sampler.new{
   {"t", function(s) return s:time() - t_lift end},
   {"slump_mm", function() return measure_slump().slump * 1000 end},
   {"slump_flow_mm", function() return sim:measure_slump_flow{axis = {0, 0}, base_z = 0, pixel = P.pixel}.diameter_fit * 1000 end},
   {"rms_speed", function(s) return util.rms_speed(s) end},
   {"cone_bottom_mm", function(s) return cone and cone_bottom(s:time()) * 1000 or nil end},
+  {"cone_load_N", cone_load_since_last},  -- largest |force| on the cone since the previous sample
 }
 local cone_cleared = trigger.named("cone_cleared", function(s)
   return cone_bottom(s:time()) > top_under_cone(true) + P.clearance
 end)
-local function stop_lift(s)
+local STOP_REASONS = {cone_cleared = "the cone is clearance above the pile",
+                      at_rest_cone_free = "the pile at rest and the cone free of mud over free_rest_window"}
+local function stop_lift(s, why)
   local t = s:time()
   carried = measure_carried(cone_bottom(t))
   sim:set_motion(cone, {type = "fixed"})
   lift_stop = t
-  io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm\n", t - t_lift, cone_bottom(t) * 1000))
+  io.stderr:write(string.format("slump: lift stopped at t = %.2f s, cone bottom %.0f mm: %s\n", t - t_lift,
+                                cone_bottom(t) * 1000, STOP_REASONS[why] or why))
 end
 local function since_lift_stop() return lift_stop end
 local at_rest_after_lift = trigger.all{
@@ -225,16 +244,27 @@ local at_rest_after_lift = trigger.all{
                 trigger.steady(history, "slump_mm", P.rest_window, P.slump_tolerance * 1000, "slump_steady")},
   },
 }
+-- At rest with the cone free (free_rest_window > 0, with a cone): over the window every sample's
+-- RMS speed is below rest_speed and the cone carried no load, and the slump is steady.
+local at_rest_cone_free = trigger.all{
+  trigger.elapsed(P.min_rest_time),
+  trigger.named("at_rest_cone_free", function()
+    return observables.at_rest_cone_free(history.rows, P.free_rest_window, P.rest_speed, P.slump_tolerance * 1000)
+  end),
+}
 history:record(sim)
 local lift_and_rest = phase.run(sim, {
   duration = P.max_time, every = P.history_interval, snapshot_every = snapshot_every, progress = P.progress,
   record_loads_every = cone and P.load_interval or nil, record_loads = cone and {cone} or nil,
   sample = history,
   events = cone and {{when = cone_cleared, act = stop_lift}} or nil,
-  stop = at_rest_after_lift,
+  stop = (cone and P.free_rest_window > 0) and trigger.any{at_rest_after_lift, at_rest_cone_free} or at_rest_after_lift,
 })
 local at_rest, rest_criterion = lift_and_rest.stopped_by ~= nil, lift_and_rest.stopped_by
 local rest_time = at_rest and history:last().t or nil
+if rest_criterion == "at_rest_cone_free" and not lift_stop then
+  stop_lift(sim, rest_criterion)  -- nothing touches the cone: where it stops changes nothing
+end
 if cone and not carried then carried = measure_carried(P.lift_speed * (sim:time() - t_lift)) end
 if not at_rest then
   io.stderr:write(string.format("warning: slump: the pile is not at rest after max_time = %g s (RMS speed %.3g m/s)%s\n",

@@ -8,6 +8,7 @@
 --   local s = obs.history_at(history, obs.HISTORY_TIMES) --> slump [mm] at each time
 --   local f = obs.cone_force(sim:wall_load_history(cone), t_lift, t_stop) --> {mean =, peak =, samples =}
 --   local m = obs.carried_by_cone(sim, {...})          --> {mass_g =, count =}
+--   obs.at_rest_cone_free(history.rows, 0.1, 0.01, 1)  --> whether the run can end (slump.lua step 3)
 local sampler = require("lib.sampler")
 
 local M = {}
@@ -41,18 +42,27 @@ function M.history_at(history, times)
 end
 
 -- Vertical force of the mud on the cone, positive downward (the mud holds the cone back), over
--- the load samples with t0 <= t <= t1 (absolute times): mean and peak. `samples` as
+-- the load samples with t0 <= t <= t1 (absolute times) up to the last one with a load: mean and
+-- peak while the mud loads the cone. The samples after the last load (the cone free, an exact zero
+-- force) are left out, so that the mean does not depend on how long the cone rose, or the run
+-- went on, after the mud let go of it (slump.lua's two ways to end the lift). `samples` as
 -- sim:wall_load_history returns them ({t =, force = {fx, fy, fz}}, the force the particles exert).
 function M.cone_force(samples, t0, t1)
-  local sum, n, peak = 0, 0, -math.huge
+  local window = {}
   for _, s in ipairs(samples) do
-    if s.t >= t0 - 1e-12 and s.t <= t1 + 1e-12 then
-      local down = -s.force[3]
-      sum, n, peak = sum + down, n + 1, math.max(peak, down)
-    end
+    if s.t >= t0 - 1e-12 and s.t <= t1 + 1e-12 then window[#window + 1] = s end
   end
-  if n == 0 then return {mean = 0, peak = 0, samples = 0} end
-  return {mean = sum / n, peak = peak, samples = n}
+  local last = #window
+  while last > 0 and window[last].force[1] == 0 and window[last].force[2] == 0 and window[last].force[3] == 0 do
+    last = last - 1
+  end
+  if last == 0 then return {mean = 0, peak = 0, samples = 0} end
+  local sum, peak = 0, -math.huge
+  for k = 1, last do
+    local down = -window[k].force[3]
+    sum, peak = sum + down, math.max(peak, down)
+  end
+  return {mean = sum / last, peak = peak, samples = last}
 end
 
 -- Mud carried by the cone: spheres whose centre lies above the cone's bottom edge (z_bottom) and
@@ -77,6 +87,38 @@ function M.carried_by_cone(sim, o)
     end
   end
   return {mass_g = mass * 1000, count = count}
+end
+
+-- Largest magnitude of the force in the load samples after the first `seen` ones (0 when there
+-- are none, or when no sphere touched the wall in any of them: the engine records an exact zero
+-- then), and tells `set_seen` how many samples it has looked at.
+function M.largest_load(samples, seen, set_seen)
+  local largest = 0
+  for k = seen + 1, #samples do
+    local f = samples[k].force
+    largest = math.max(largest, math.sqrt(f[1] ^ 2 + f[2] ^ 2 + f[3] ^ 2))
+  end
+  set_seen(#samples)
+  return largest
+end
+
+-- The pile at rest and the cone free of mud over the last `window` seconds of history rows
+-- ({t =, rms_speed =, slump_mm =, cone_load_N =}, t ascending): the rows from the last one at or
+-- before t_last − window (so that they span the window whatever the rounding of the sample times
+-- to whole steps) to the last all have their RMS speed below `speed` and no load on the cone, and
+-- their slumps differ by at most `tolerance` mm (0: not checked). After such a window nothing can
+-- move the pile again: the cone, the only moving wall, touches no sphere, and the spheres are at rest.
+function M.at_rest_cone_free(rows, window, speed, tolerance)
+  if not (window > 0) or #rows == 0 then return false end
+  local start = rows[#rows].t - window + 1e-9
+  local lo, hi = math.huge, -math.huge
+  for k = #rows, 1, -1 do
+    local row = rows[k]
+    if not (row.rms_speed < speed) or row.cone_load_N ~= 0 then return false end
+    lo, hi = math.min(lo, row.slump_mm), math.max(hi, row.slump_mm)
+    if row.t <= start then return not (tolerance > 0) or hi - lo <= tolerance end
+  end
+  return false  -- the rows do not reach back a whole window
 end
 
 -- Whether sphere i moves with the rising cone (see carried_by_cone): used to leave such spheres

@@ -80,6 +80,15 @@ check(at[1] == 50 and at[2] == 100 and at[3] == 125 and at[4] == 150, "history_a
 local samples = {{t = 1, force = {0, 0, -2}}, {t = 2, force = {0, 0, -4}}, {t = 3, force = {0, 0, 6}}}
 local f = obs.cone_force(samples, 1, 2)
 check(f.mean == 3 and f.peak == 4 and f.samples == 2, "cone force mean %g peak %g n %d", f.mean, f.peak, f.samples)
+-- After the mud let go of the cone its samples are exact zeros: they do not count, however many
+-- (the mean is the same whether the lift ended early or rose on); a zero between loads does.
+local free = {{t = 1, force = {0, 0, -2}}, {t = 2, force = {0, 0, 0}}, {t = 3, force = {1, 0, -4}}}
+for k = 4, 40 do free[k] = {t = k, force = {0, 0, 0}} end
+local g, g_short = obs.cone_force(free, 1, 40), obs.cone_force(free, 1, 5)
+check(g.mean == 2 and g.peak == 4 and g.samples == 3 and g_short.mean == 2 and g_short.samples == 3,
+      "cone force with the cone free at the end: mean %g / %g, peak %g, n %d / %d", g.mean, g_short.mean, g.peak, g.samples, g_short.samples)
+local none = obs.cone_force({{t = 1, force = {0, 0, 0}}, {t = 2, force = {0, 0, 0}}}, 0, 3)
+check(none.mean == 0 and none.peak == 0 and none.samples == 0, "no load at all: zeros")
 check(#obs.HISTORY_TIMES > 3 and math.floor(obs.PROFILE_R_MAX / obs.PROFILE_BIN + 0.5) == 12, "fixed grids")
 -- A fake simulation: one sphere rising with the cone inside it, one at rest inside, one rising outside.
 local fake = {

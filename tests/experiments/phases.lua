@@ -1,7 +1,8 @@
 -- The experiments' run helpers: lib/sampler.lua (rows, interpolation on a fixed grid, the steady
 -- window that ends the slump test), lib/trigger.lua (combinations, elapsed time, periodic),
 -- lib/phase.lua (a stop trigger ends sim:run early, an event acts once), lib/chart.lua (the gnuplot
--- script) and lib/reference_measurement.lua (the measured slump from the calibration input).
+-- script), lib/reference_measurement.lua (the measured slump from the calibration input) and the
+-- slump test's end with the cone free (lib/slump_observables.lua).
 local sampler = require("lib.sampler")
 local trigger = require("lib.trigger")
 local phase = require("lib.phase")
@@ -104,6 +105,49 @@ check(gp == "set title 'the mud''s slump'\nset xlabel 't [s]'\nset grid\nset key
       .. "plot '/o/h.dat' using 1:2 with lines title 'slump', \\\n     231 with lines dt 3 notitle, \\\n"
       .. "     '-' using 1:2 with points title 'peak'\n1 2\n3 4.5\ne", "chart script:\n%s", gp)
 check(not pcall(chart.script, {title = "x", series = {}}), "a chart without series must be refused")
+
+-- The slump test's end before the lift has cleared the pile (lib/slump_observables.lua): rows every
+-- 0.05 s; the pile at rest and the cone free over the last 0.1 s (three rows) ends the run, and each
+-- single condition broken in one row of that window keeps it going.
+local obs = require("lib.slump_observables")
+local function rest_rows(edit)
+  local out = {}
+  for k = 0, 10 do
+    out[#out + 1] = {t = 0.05 * k, rms_speed = k < 8 and 0.2 or 0.004, slump_mm = k < 8 and 20 * k or 228.3,
+                     cone_load_N = k < 8 and 3.5 or 0}
+  end
+  if edit then edit(out) end
+  return out
+end
+check(obs.at_rest_cone_free(rest_rows(), 0.1, 0.01, 1), "at rest and free over the last three rows")
+check(not obs.at_rest_cone_free(rest_rows(), 0.2, 0.01, 1), "0.2 s reaches back into the collapse")
+check(not obs.at_rest_cone_free(rest_rows(function(r) r[10].cone_load_N = 1e-9 end), 0.1, 0.01, 1),
+      "a load on the cone in the window keeps the run going")
+check(not obs.at_rest_cone_free(rest_rows(function(r) r[11].rms_speed = 0.01 end), 0.1, 0.01, 1),
+      "an RMS speed not below rest_speed keeps the run going")
+check(not obs.at_rest_cone_free(rest_rows(function(r) r[9].slump_mm = 226.9 end), 0.1, 0.01, 1),
+      "a slump that moved by more than the tolerance keeps the run going")
+check(obs.at_rest_cone_free(rest_rows(function(r) r[9].slump_mm = 226.9 end), 0.1, 0.01, 0),
+      "tolerance 0: the slump is not checked")
+check(not obs.at_rest_cone_free({{t = 1, rms_speed = 0, slump_mm = 1, cone_load_N = 0}}, 0.1, 0.01, 1),
+      "one row does not span the window")
+-- Sample times rounded to whole steps (0.0501 s apart here): the window starts at the last row at
+-- or before t_last − 0.1 s, so three such rows still end the run.
+local drift = {{t = 2.0508, rms_speed = 0.5, slump_mm = 200, cone_load_N = 0}}
+for _, t in ipairs({2.1008, 2.1509, 2.2010}) do
+  drift[#drift + 1] = {t = t, rms_speed = 0.007, slump_mm = 239.48, cone_load_N = 0}
+end
+check(not obs.at_rest_cone_free({drift[1], drift[2], drift[3]}, 0.1, 0.01, 1), "2.0508 s is in the window and moving")
+check(obs.at_rest_cone_free(drift, 0.1, 0.01, 1), "rows 2.1008-2.2010 s span the window")
+check(not obs.at_rest_cone_free(rest_rows(), 0, 0.01, 1), "window 0: off")
+-- The largest load since the last look: an exact zero when nothing touched the wall.
+local seen = 0
+local function set_seen(n) seen = n end
+local loads = {{force = {0, 0, 0}}, {force = {3, 0, -4}}, {force = {0, 0, 0}}}
+check(obs.largest_load(loads, seen, set_seen) == 5 and seen == 3, "largest load 5 N over three samples")
+loads[4], loads[5] = {force = {0, 0, 0}}, {force = {0, 0, 0}}
+check(obs.largest_load(loads, seen, set_seen) == 0 and seen == 5, "no load in the two new samples")
+check(obs.largest_load(loads, seen, set_seen) == 0 and seen == 5, "no new sample: no load")
 
 -- The measured slump test: the calibration input's targets.
 local measured = reference.slump()

@@ -27,6 +27,20 @@ function(integer_part var value)
   set(${var} "${i}" PARENT_SCOPE)
 endfunction()
 
+# A decimal number of millimetres (no exponent) as whole micrometres (truncated), for math(EXPR).
+function(micrometres var value)
+  if(NOT value MATCHES "^(-?)([0-9]+)(\\.([0-9]*))?$")
+    message(FATAL_ERROR "'${value}' is not a plain decimal number")
+  endif()
+  set(sign "${CMAKE_MATCH_1}")
+  set(whole "${CMAKE_MATCH_2}")
+  set(frac "${CMAKE_MATCH_4}000")
+  string(SUBSTRING "${frac}" 0 3 frac)
+  string(REGEX REPLACE "^0+([0-9])" "\\1" frac "${frac}")
+  math(EXPR um "${sign}(${whole} * 1000 + ${frac})")
+  set(${var} "${um}" PARENT_SCOPE)
+endfunction()
+
 function(expect_file path)
   if(NOT EXISTS ${path})
     message(FATAL_ERROR "missing output file ${path}")
@@ -95,6 +109,72 @@ sim:measure_slump_flow{pixels = 0.001}
   if(NOT se MATCHES "hb\\.lua:2:")
     message(FATAL_ERROR "the HB error does not name hb.lua:2")
   endif()
+
+elseif(CASE STREQUAL "slump_free_rest")
+  # The slump test ends once the pile has been at rest and the cone free of mud over
+  # free_rest_window (default 0.1 s), before the lift has cleared the pile. The same run with the
+  # rule off (0: the lift goes on until the cone is `clearance` above the pile, then min_rest_time
+  # more) must be the same run, only longer: the early run's history is the prefix of the long
+  # one's to the last bit (one thread, one seed), and nothing changes after the early end: the
+  # slump stays within slump_tolerance and the cone is never loaded again. A rule that ended the
+  # run while the pile still moved, or that changed the run before its end, fails here.
+  # At 22 mm the pile is still moving when the cone is 20 mm above it; with a clearance of 80 mm
+  # it comes to rest while the cone still rises, as the main job's does at 10 mm.
+  set(free_rest_args ${SOURCE}/experiments/slump.lua --threads 1 --seed 2 --set particle_diameter=0.022
+      --set settle_max_time=1.0 --set min_rest_time=0.2 --set max_time=4 --set snapshot_interval=0
+      --set pictures=false --set progress=false --set clearance=0.08)
+  run_paddy(code se run ${free_rest_args} --out early)
+  expect_code(${code} 0)
+  run_paddy(code se run ${free_rest_args} --out full --set free_rest_window=0)
+  expect_code(${code} 0)
+  result_json(GET early criterion rest_criterion)
+  result_json(GET full criterion_full rest_criterion)
+  if(NOT criterion STREQUAL "at_rest_cone_free" OR criterion_full STREQUAL "at_rest_cone_free")
+    message(FATAL_ERROR "rest criteria '${criterion}' (expected at_rest_cone_free) and '${criterion_full}' (rule off)")
+  endif()
+  result_json(GET early t_early simulated_time_s)
+  result_json(GET full t_full simulated_time_s)
+  expect_number(${t_early} LESS ${t_full} "simulated time of the early end (the full run's ${t_full} s)")
+  result_json(GET early carried mass_on_cone_g)
+  expect_number(${carried} EQUAL 0 "mud on the cone at the early end")
+  result_json(LENGTH early n_early history)
+  result_json(LENGTH full n_full history)
+  expect_number(${n_early} LESS ${n_full} "history samples of the early end")
+  math(EXPR last_early "${n_early} - 1")
+  foreach(k RANGE 0 ${last_early})
+    foreach(key t slump_mm slump_flow_mm rms_speed cone_load_N)
+      result_json(GET early a history ${k} ${key})
+      result_json(GET full b history ${k} ${key})
+      if(NOT a STREQUAL b)
+        message(FATAL_ERROR "history row ${k}: ${key} ${a} (early end) differs from ${b} (rule off)")
+      endif()
+    endforeach()
+  endforeach()
+  result_json(GET early slump_end slump_mm)
+  result_json(GET early load_end history ${last_early} cone_load_N)
+  expect_number(${load_end} EQUAL 0 "load on the cone at the early end")
+  micrometres(end_um ${slump_end})
+  math(EXPR last_full "${n_full} - 1")
+  foreach(k RANGE ${n_early} ${last_full})
+    result_json(GET full load history ${k} cone_load_N)
+    expect_number(${load} EQUAL 0 "load on the cone after the early end (row ${k})")
+    result_json(GET full later history ${k} slump_mm)
+    micrometres(later_um ${later})
+    math(EXPR drift "${later_um} - ${end_um}")
+    if(drift GREATER 1000 OR drift LESS -1000)
+      message(FATAL_ERROR "row ${k}: the slump moved from ${slump_end} mm at the early end to ${later} mm: the pile was not at rest")
+    endif()
+  endforeach()
+  result_json(GET full slump_full slump_mm)
+  # The cone force is averaged while the mud loads the cone: the same however long the lift went on.
+  foreach(key mean peak samples)
+    result_json(GET early a cone_force_N ${key})
+    result_json(GET full b cone_force_N ${key})
+    if(NOT a STREQUAL b)
+      message(FATAL_ERROR "cone_force_N.${key}: ${a} (early end) differs from ${b} (rule off)")
+    endif()
+  endforeach()
+  message(STATUS "ok: early end at ${t_early} s of ${t_full} s, slump ${slump_end} / ${slump_full} mm")
 
 elseif(CASE STREQUAL "slump_mini")
   # ~600 spheres of 22 mm (α = 11). Assertions a broken experiment fails:
