@@ -419,10 +419,28 @@ end
 -----------------------------------------------------------------------------------------------
 -- 3. Name: signatures at zero strength and the diagnosis.
 say("3. signatures of %d candidate(s), %d seed(s) each", #cands, S.signature_seeds)
+-- Each signature seed s is a pair of runs at θ̂, the probe and λ = 0 (common random numbers). The
+-- λ = 0 run is the baseline's own (signature_baseline = "own", seed seed0 + 400 + s, which no
+-- replicate has): were it replicate s, the signature's noise (−f(seed_s)/probe) and the residual's
+-- (−mean of the replicates) would share f(seed_s), and z = gᵀPr/√a would have a positive mean under
+-- the null, largest for a signature that is mostly seed noise. "replicates" is the earlier rule.
+local base_runs = {}
+if S.signature_baseline == "own" then
+  local base_points = {}
+  for s = 1, S.signature_seeds do
+    base_points[s] = {theta = theta, lambda = {}, seed = seed0 + 400 + s, label = string.format("signature baseline seed %d", s)}
+  end
+  base_runs = evaluate("signature baselines", base_points)
+else
+  for s = 1, S.signature_seeds do base_runs[s] = reps[s] end
+end
+local function signature_seed(s)
+  return S.signature_baseline == "own" and seed0 + 400 + s or rep_points[s].seed
+end
 local sig_points = {}
 for _, c in ipairs(cands) do
   for s = 1, S.signature_seeds do
-    sig_points[#sig_points + 1] = {theta = theta, lambda = {[c.name] = c.probe}, seed = rep_points[s].seed,
+    sig_points[#sig_points + 1] = {theta = theta, lambda = {[c.name] = c.probe}, seed = signature_seed(s),
                                    label = string.format("%s probe seed %d", c.name, s), candidate = c, s = s}
   end
 end
@@ -433,7 +451,7 @@ for k, c in ipairs(cands) do
   for i = 1, m do g[i] = 0 end
   for n, pt in ipairs(sig_points) do
     if pt.candidate == c then
-      for i = 1, m do g[i] = g[i] + (sig_runs[n][i] - reps[pt.s][i]) / c.probe / S.signature_seeds end
+      for i = 1, m do g[i] = g[i] + (sig_runs[n][i] - base_runs[pt.s][i]) / c.probe / S.signature_seeds end
     end
   end
   signatures[c.name] = g

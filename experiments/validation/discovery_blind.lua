@@ -36,6 +36,10 @@ local P = paddy.parameters{
    description = "truth runs (seeds) per measurement: the measured value is their mean, as a slump test is reported as the mean of repeated tests (the reference: 10), and the input says measured_repeats = this"},
   {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
    description = "each candidate's smallest relevant strength as a fraction of its range (its input key 'relevant'; docs/discovery.md, \"Decision\"): a weaker effect is not named. Hidden strengths are drawn from 0.15 of the range up; 0 = any strength counts"},
+  {name = "signature_seeds", default = 0, type = "integer", min = 0, max = 5,
+   description = "seeds each candidate's signature is averaged over (settings.signature_seeds; 0 = the variant's: full 2, tiny and small 3)"},
+  {name = "probe_fraction", default = 0.5, min = 0.05, max = 1,
+   description = "each candidate's probe strength as a fraction of its range (its input key 'probe'): a signature's seed noise does not grow with the probe, its signal does"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
@@ -65,9 +69,12 @@ if P.tiny or P.small then
   if P.tiny then n_effect, n_null, n_outside = 1, 1, 0 end
   if d_work == 0.016 then d_work = 0.025 end
   if d_truth == 0.014 then d_truth = 0.023 end
-  settings = {iterations = 5, replicates = 5, signature_seeds = 1, confirm_seeds = 2, measured_repeats = 1,
+  -- three signature seeds: with one, a weak candidate's signature at 25 mm is mostly seed noise
+  -- (docs/discovery.md, "Signature noise"): 3 wrong names in 30 effect trials, with three none
+  settings = {iterations = 5, replicates = 5, signature_seeds = 3, confirm_seeds = 2, measured_repeats = 1,
               resolution_factor = 0.9, resolution_seeds = 2}
 end
+if P.signature_seeds > 0 then settings.signature_seeds = P.signature_seeds end
 -- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
 -- every cone size, and the vane when vane_scale > 0.
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,
@@ -216,7 +223,7 @@ for i, t in ipairs(trials) do
   do
   local cands = {}
   for n, c in ipairs(set.candidates) do
-    cands[n] = {name = c.name, parameter = c.parameter, low = c.low, high = c.high}
+    cands[n] = {name = c.name, parameter = c.parameter, low = c.low, high = c.high, probe = P.probe_fraction * c.high}
     if P.relevant_fraction > 0 then cands[n].relevant = P.relevant_fraction * c.high end
   end
   local input = {description = string.format("blind trial %d", t.no), experiments = exps, free_parameters = free,

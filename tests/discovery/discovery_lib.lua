@@ -41,6 +41,21 @@ check(right and not wrong, "outside answered unknown is right")
 right, wrong = score.judge({kind = "outside", name = "x"}, "a", names)
 check(not right and wrong, "outside answered a is a wrong name")
 check(score.answer({decision = "effect", named_effect = "b"}) == "b" and score.answer({decision = "ambiguous"}) == "ambiguous", "answers")
+-- Correct names by visibility: expected z = z_at_high * strength / high, bins [lo, hi), nulls left out.
+local vis = score.by_visibility({
+  {trial = 1, truth = {kind = "candidate", name = "a", strength = 1}, answer = "none", right = false},  -- z 2
+  {trial = 2, truth = {kind = "candidate", name = "b", strength = 0.5}, answer = "a", right = false},   -- z 5, wrong name
+  {trial = 3, truth = {kind = "candidate", name = "a", strength = 4}, answer = "a", right = true},     -- z 8
+  {trial = 4, truth = {kind = "none"}, answer = "none", right = true},
+  {trial = 5, truth = {kind = "candidate", name = "b", strength = 1}, answer = "b", right = true},    -- z 10
+}, {a = {z_at_high = 20, high = 10}, b = {z_at_high = 10, high = 1}}, {3, 6}, names)
+check(#vis.rows == 4 and vis.rows[1].trial == 1 and vis.rows[1].z_expected == 2 and vis.rows[4].z_expected == 10,
+      "visibility rows sorted by expected z")
+check(vis.bins[1].trials == 1 and vis.bins[1].right == 0 and vis.bins[2].trials == 1 and vis.bins[2].wrong_names == 1
+      and vis.bins[3].trials == 2 and vis.bins[3].right == 2 and near(vis.bins[3].lower95, score.clopper_pearson_lower(2, 2), 0),
+      "visibility bins")
+check(not pcall(score.by_visibility, {{trial = 1, truth = {kind = "candidate", name = "c", strength = 1}, answer = "none"}},
+                {a = {z_at_high = 1, high = 1}}, {3}, names), "a candidate the sensitivity study lacks is refused")
 local s = score.summarise({
   {truth = {kind = "candidate", name = "a", strength = 2}, answer = "a", right = true, strength = 2.5, misfit_before = 4, misfit_after = 1},
   {truth = {kind = "candidate", name = "b", strength = 1}, answer = "ambiguous", right = false},
@@ -130,11 +145,14 @@ t = good(); t.settings = {iteration = 3}; bad(t, "unknown key 'settings%.iterati
 t = good(); t.settings = {resolution_factor = 0.3}; bad(t, "settings%.resolution_factor = 0%.3: allowed 0 %(off%) or 0%.5 to 0%.99")
 t = good(); t.settings = {refit = "newton"}; bad(t, "settings%.refit = 'newton': allowed surface, gauss_newton")
 t = good(); t.settings = {calibration_start = "best"}; bad(t, "settings%.calibration_start = 'best': allowed surface, best_scan")
+t = good(); t.settings = {signature_baseline = "replicate"}; bad(t, "settings%.signature_baseline = 'replicate': allowed own, replicates")
+t = good(); t.settings = {signature_baseline = "replicates", signature_seeds = 6}
+bad(t, "settings%.signature_seeds = 6 with signature_baseline = 'replicates' needs as many replicates")
 t = good(); t.settings = {measured_repeats = -1}; bad(t, "settings%.measured_repeats = %-1 is outside the allowed range")
 t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 2 is outside the allowed range %[3,")
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
       and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4 and g.settings.refit == "surface"
-      and g.settings.calibration_start == "surface", "defaults of the start scan, the calibration's start, the refit, step control, specimen scatter, resolution and strong margin")
+      and g.settings.calibration_start == "surface" and g.settings.signature_baseline == "own", "defaults of the start scan, the calibration's start, the refit, step control, specimen scatter, resolution and strong margin")
 t = good(); t.candidates = {}; bad(t, "'candidates' must be a non%-empty list")
 t = good(); t.candidates[1].relevant = 0.3; bad(t, "candidates%[1%]%.relevant = 0%.3 must be below high = 0%.3")
 t = good(); t.candidates[1].relevant = -0.01; bad(t, "candidates%[1%]%.relevant = %-0%.01 is outside the allowed range %[0, 0%.3%]")

@@ -21,6 +21,37 @@ if(CASE STREQUAL "lib")
   expect_code(${code} 0)
   result_of(out ok ok)
 
+elseif(CASE STREQUAL "visibility")
+  # discovery_visibility.lua on the committed small benchmark and sensitivity study: every effect
+  # trial lands in one bin, the bins' counts add up to the summary's, and a group the study lacks is
+  # refused with the allowed ones.
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_visibility.lua --out out
+            --set blind=${SOURCE}/docs/results/discovery_blind_small60_summary.json
+            --set sensitivity=${SOURCE}/docs/results/discovery_sensitivity_25mm_two_cones_vane.json --set group=slump)
+  expect_code(${code} 0)
+  file(READ ${SOURCE}/docs/results/discovery_blind_small60_summary.json summary)
+  string(JSON effect_trials GET "${summary}" summary effect_trials)
+  string(JSON correct GET "${summary}" summary correct_names)
+  length_of(out n_rows rows)
+  length_of(out n_bins bins)
+  set(total 0)
+  set(named 0)
+  math(EXPR last "${n_bins} - 1")
+  foreach(k RANGE 0 ${last})
+    result_of(out t bins ${k} trials)
+    result_of(out r bins ${k} right)
+    math(EXPR total "${total} + ${t}")
+    math(EXPR named "${named} + ${r}")
+  endforeach()
+  if(NOT n_rows EQUAL effect_trials OR NOT total EQUAL effect_trials OR NOT named EQUAL correct OR NOT n_bins EQUAL 4)
+    message(FATAL_ERROR "rows ${n_rows}, binned ${total}, named ${named}, bins ${n_bins}; the summary: ${effect_trials} effect trials, ${correct} named")
+  endif()
+  run_paddy(code se run ${SOURCE}/experiments/validation/discovery_visibility.lua --out bad
+            --set blind=${SOURCE}/docs/results/discovery_blind_small60_summary.json
+            --set sensitivity=${SOURCE}/docs/results/discovery_sensitivity_25mm_two_cones_vane.json --set group=cone)
+  expect_code(${code} 2)
+  expect_match("${se}" "group = 'cone' is not in .*allowed: slump, slump_cone150")
+
 elseif(CASE STREQUAL "input_errors")
   # No input file given; an unknown script; a sigma missing: each refused with file, key, allowed values.
   run_paddy(code se run ${SOURCE}/experiments/discover.lua --out out --threads 1)

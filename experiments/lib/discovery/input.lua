@@ -130,7 +130,7 @@ function M.read(path)
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
                    "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit",
-                   "calibration_start"}
+                   "calibration_start", "signature_baseline"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
   for k in pairs(s) do
@@ -184,6 +184,18 @@ function M.read(path)
   S.calibration_start = s.calibration_start or "surface"
   if S.calibration_start ~= "surface" and S.calibration_start ~= "best_scan" then
     fail(path, string.format("settings.calibration_start = '%s': allowed surface, best_scan", tostring(S.calibration_start)))
+  end
+  -- The λ = 0 run of each signature seed: its own run at a seed no replicate has (default; the
+  -- signature's noise is then independent of the residual's) or the replicate of that seed (the
+  -- earlier rule, one run fewer per seed; docs/discovery.md, step 3).
+  S.signature_baseline = s.signature_baseline or "own"
+  if S.signature_baseline ~= "own" and S.signature_baseline ~= "replicates" then
+    fail(path, string.format("settings.signature_baseline = '%s': allowed own, replicates", tostring(S.signature_baseline)))
+  end
+  if S.signature_baseline == "replicates" and S.signature_seeds > S.replicates then
+    fail(path, string.format("settings.signature_seeds = %d with signature_baseline = 'replicates' needs as many replicates "
+                             .. "(settings.replicates = %d); allowed: signature_seeds <= replicates, or signature_baseline = 'own'",
+                             S.signature_seeds, S.replicates))
   end
   input.settings = S
   return input

@@ -49,6 +49,42 @@ function M.answer(result)
   return result.decision
 end
 
+-- Correct names of effect trials by how visible the hidden effect is: its expected z, the
+-- strength times the z a sensitivity study measured at the candidate's top strength, divided by
+-- that strength (z_at_high · strength / high: linear in the strength, as the score test is).
+-- trials: scored rows ({truth = {kind, name, strength}, answer =, right =}); sensitivity:
+-- {name -> {z_at_high =, high =}}; edges: ascending bin edges of the expected z (e.g. {3, 6, 10}).
+-- Returns {rows = per trial {trial, name, strength, z_expected, answer, right} sorted by z,
+--          bins = {{from =, to =, trials =, right =, wrong_names =, lower95 =}, ...}}.
+function M.by_visibility(trials, sensitivity, edges, candidate_names)
+  local rows = {}
+  for _, t in ipairs(trials) do
+    local tr = t.truth
+    if tr.kind == "candidate" then
+      local s = sensitivity[tr.name]
+      if not s then error("score.by_visibility: the sensitivity study has no candidate " .. tostring(tr.name), 2) end
+      local _, wrong = M.judge(tr, t.answer, candidate_names)
+      rows[#rows + 1] = {trial = t.trial, name = tr.name, strength = tr.strength, answer = t.answer, right = t.right,
+                         wrong_name = wrong, z_expected = s.z_at_high * tr.strength / s.high}
+    end
+  end
+  table.sort(rows, function(a, b) return a.z_expected < b.z_expected end)
+  local bins, lo = {}, -math.huge
+  for k = 1, #edges + 1 do
+    local hi = edges[k] or math.huge
+    local b = {from = lo, to = hi, trials = 0, right = 0, wrong_names = 0}
+    for _, r in ipairs(rows) do
+      if r.z_expected >= lo and r.z_expected < hi then
+        b.trials, b.right = b.trials + 1, b.right + (r.right and 1 or 0)
+        b.wrong_names = b.wrong_names + (r.wrong_name and 1 or 0)
+      end
+    end
+    b.lower95 = b.trials > 0 and M.clopper_pearson_lower(b.right, b.trials) or nil
+    bins[k], lo = b, hi
+  end
+  return {rows = rows, bins = bins}
+end
+
 -- Whether an answer is right for a truth {kind = "none"|"candidate"|"outside", name =}:
 -- none → "none"; a candidate → its name; an effect outside the list → "unknown" or "none"
 -- (never a wrong name). Returns right, wrong_name.

@@ -1,0 +1,60 @@
+-- Correct names of a blind benchmark's effect trials by how visible each hidden effect was:
+-- its expected z = z_at_high · strength / high, with z_at_high from a sensitivity study of the
+-- same experiments and resolution (experiments/validation/discovery_sensitivity.lua, group
+-- `group`). Reads two committed result files, runs no simulation (docs/discovery.md,
+-- "Which hidden effects can be named").
+--
+--   paddy run experiments/validation/discovery_visibility.lua \
+--     --set blind=docs/results/discovery_blind_small60_summary.json \
+--     --set sensitivity=docs/results/discovery_sensitivity_25mm_two_cones_vane.json --set group=slump --out DIR
+local score = require("lib.discovery.score")
+local util = require("lib.util")
+
+local P = paddy.parameters{
+  {name = "blind", default = "", description = "a blind benchmark's summary (blind_summary.json or its committed copy)"},
+  {name = "sensitivity", default = "", description = "a sensitivity study's result (discovery_sensitivity.lua's sensitivity.json)"},
+  {name = "group", default = "slump", description = "the group of experiments of the sensitivity study that the benchmark ran"},
+  {name = "edges", default = "3,6,10", description = "bin edges of the expected z, ascending"},
+}
+if P.blind == "" or P.sensitivity == "" then
+  error("discovery_visibility.lua: give --set blind=FILE and --set sensitivity=FILE", 0)
+end
+local blind = paddy.read_json(P.blind)
+local sens = paddy.read_json(P.sensitivity)
+local trials = blind.trials or (blind.results and blind.results.trials)
+if type(trials) ~= "table" then error(string.format("discovery_visibility.lua: %s has no 'trials'", P.blind), 0) end
+
+local group
+for _, g in ipairs(sens.groups or {}) do if g.name == P.group then group = g end end
+if not group then
+  local names = {}
+  for _, g in ipairs(sens.groups or {}) do names[#names + 1] = g.name end
+  error(string.format("discovery_visibility.lua: group = '%s' is not in %s (allowed: %s)", P.group, P.sensitivity,
+                      table.concat(names, ", ")), 0)
+end
+local high = {}
+for _, c in ipairs(sens.candidates) do high[c.name] = c.high end
+local visibility, names = {}, {}
+for _, c in ipairs(group.candidates) do
+  visibility[c.name] = {z_at_high = c.z_at_high, high = high[c.name]}
+  names[c.name] = true
+end
+local edges = util.numbers(P.edges, "edges")
+for k = 2, #edges do
+  if not (edges[k] > edges[k - 1]) then error("discovery_visibility.lua: edges must ascend", 0) end
+end
+
+local v = score.by_visibility(trials, visibility, edges, names)
+print(string.format("%-5s %-17s %9s %7s  %s", "trial", "hidden effect", "strength", "z exp", "answer"))
+for _, r in ipairs(v.rows) do
+  print(string.format("%-5d %-17s %9.4g %7.1f  %s%s", r.trial, r.name, r.strength, r.z_expected, r.answer,
+                      r.right and "" or (r.wrong_name and "  (wrong name)" or "  (missed)")))
+end
+print()
+print("expected z      trials  named  wrong names  lower 95 % bound")
+for _, b in ipairs(v.bins) do
+  print(string.format("[%4s, %4s)  %7d  %5d  %11d  %s", b.from == -math.huge and "-inf" or string.format("%g", b.from),
+                      b.to == math.huge and "inf" or string.format("%g", b.to), b.trials, b.right, b.wrong_names,
+                      b.lower95 and string.format("%.1f %%", 100 * b.lower95) or "-"))
+end
+paddy.result{blind = P.blind, sensitivity = P.sensitivity, group = P.group, rows = v.rows, bins = v.bins}
