@@ -185,8 +185,9 @@ Diagnosis diagnose(const DiagnoseInput& in) {
     if (!c.identifiable) continue;
     c.passes = o.zThreshold ? c.zRelevant > *o.zThreshold : c.pHolm < o.alpha;
     const auto& cand = *std::find_if(in.candidates.begin(), in.candidates.end(), [&](const Candidate& x) { return x.name == c.name; });
-    c.plausible = c.passes && c.score.strength + zHalf * c.score.strengthSe >= cand.low &&
-                  c.score.strength - zHalf * c.score.strengthSe <= cand.high;
+    c.inRange = c.score.strength + zHalf * c.score.strengthSe >= cand.low &&
+                c.score.strength - zHalf * c.score.strengthSe <= cand.high;
+    c.plausible = c.passes && c.inRange;
   }
 
   // 3. best plausible candidate
@@ -202,11 +203,14 @@ Diagnosis diagnose(const DiagnoseInput& in) {
   if (best >= 0) {
     const auto& b = d.candidates[static_cast<std::size_t>(best)];
     for (std::size_t l = 0; l < d.candidates.size(); ++l) {
-      if (static_cast<int>(l) == best || !d.candidates[l].plausible) continue;
+      // A rival with close evidence need not pass its own test: with its strength in range it
+      // explains the misfit alike (its relevance test may fail only for a larger threshold). A
+      // confusable rival with weaker evidence must pass.
+      if (static_cast<int>(l) == best || !d.candidates[l].identifiable || !d.candidates[l].inRange) continue;
       const double c = st.confusability(best, static_cast<Eigen::Index>(l));
       const double logRatio = b.score_rank - d.candidates[l].score_rank;
       const bool closeEvidence = logRatio < std::log(o.bayesMargin);
-      const bool confusableUndecided = c >= o.confusable && logRatio < std::log(o.strongMargin);
+      const bool confusableUndecided = d.candidates[l].plausible && c >= o.confusable && logRatio < std::log(o.strongMargin);
       if (closeEvidence || confusableUndecided) rivals.push_back(static_cast<int>(l));
     }
     std::sort(rivals.begin(), rivals.end(),

@@ -238,6 +238,44 @@ TEST_CASE("discovery: a confusable rival is set aside only on strong evidence (s
   CHECK_THROWS_WITH(diagnose(in), Catch::Contains("strong_margin"));
 }
 
+TEST_CASE("discovery: a rival that explains the misfit alike makes it ambiguous even when its own test fails", "[doe][discovery]") {
+  LinearModel lm;
+  // A and B share half their signature (not confusable); the missing term lies between them, so
+  // they explain it about equally well. B's smallest relevant strength is large, so its own test
+  // fails while A's passes: naming A would be a guess.
+  const Eigen::VectorXd common = gaussian(lm.rng, lm.m);
+  const Eigen::VectorXd gA = common + 0.8 * gaussian(lm.rng, lm.m), gB = common + 0.8 * gaussian(lm.rng, lm.m);
+  const Eigen::VectorXd noise = gaussian(lm.rng, lm.m);
+  auto run = [&](double highB) {
+    DiagnoseInput in = lm.input(Eigen::VectorXd::Zero(lm.m));
+    in.residual = 0.6 * (gA + gB) + noise;
+    in.candidates = {lm.candidate("A", gA, 5.0), lm.candidate("B", gB, highB)};
+    in.candidates[1].relevant = 0.6 * highB;
+    return diagnose(in);
+  };
+  const Diagnosis d = run(5.0);
+  const auto& a = report(d, "A");
+  const auto& b = report(d, "B");
+  INFO("z_A " << a.score.z << ", z_B " << b.score.z << ", z_rel_B " << b.zRelevant << ", c " << d.confusability(0, 1)
+              << ", log BF ratio " << a.score_rank - b.score_rank);
+  REQUIRE(a.passes);
+  REQUIRE_FALSE(b.passes);  // B fails only its relevance test ...
+  REQUIRE(b.score.z > 4.0);  // ... though its score is large
+  REQUIRE(b.inRange);
+  REQUIRE(d.confusability(0, 1) < 0.9);
+  REQUIRE(std::abs(a.score_rank - b.score_rank) < std::log(3.0));
+  CHECK(d.decision == "ambiguous");
+  CHECK(d.named.empty());
+  REQUIRE(d.ambiguousWith.size() == 2);
+  CHECK(d.ambiguousWith[0] == "A");
+  CHECK(d.ambiguousWith[1] == "B");
+  // B allowed only strengths far below what the data need: it is no explanation, A is named.
+  const Diagnosis outOfRange = run(0.05);
+  REQUIRE_FALSE(report(outOfRange, "B").inRange);
+  CHECK(outOfRange.decision == "effect");
+  CHECK(outOfRange.named == "A");
+}
+
 TEST_CASE("discovery: a missing term orthogonal to every candidate is unknown", "[doe][discovery]") {
   LinearModel lm;
   Eigen::MatrixXd G(lm.m, 2);

@@ -96,6 +96,9 @@ struct CandidateReport {
   bool identifiable = true;
   std::string notIdentifiableReason;  ///< "absorbed by recalibration" / "no sensitivity in [low, high]"
   bool passes = false, plausible = false;
+  /// Its strength's 95 % interval meets [low, high]. A candidate in range can be a rival of the
+  /// best one (close evidence) even when its own test does not pass: it explains the data alike.
+  bool inRange = false;
   double score_rank = 0;    ///< log BF or z^2/2, the ranking score
 };
 
