@@ -2,13 +2,15 @@
 -- stress against the overburden at the blades' mid-height. A module of its own (not lib/rheology.lua,
 -- which rheometer.lua requires) so that a change here does not change the rheometer's job keys
 -- (docs/campaign.md: a job's key hashes the modules its script requires).
+local line_fit = require("lib.line_fit")
+
 local M = {}
 
 -- Mohr–Coulomb line τ = c + σ·tanφ through (σ, τ) points by ordinary least squares: the vane's
 -- peak stress at several overburdens σ (the depth series of validation/yield_stress.lua). c is the
 -- pressure-independent (cohesive) part, tanφ the friction coefficient of the sheared packing.
--- Standard errors from the residual variance s² = SSE/(n − 2) (nil for n = 2: an exact line):
---     se(tanφ) = s/√Sxx,  se(c) = s·√(1/n + σ̄²/Sxx).
+-- Standard errors from the residual variance s² = SSE/(n − 2) (nil for n = 2: an exact line;
+-- lib/line_fit.lua): se(tanφ) = s/√Sxx,  se(c) = s·√(1/n + σ̄²/Sxx).
 -- Refuses fewer than 2 points, unequal lengths, a non-positive or non-finite σ, a non-finite τ and
 -- fewer than 2 distinct σ (no line).
 -- args: {sigma = {...}, tau = {...}}; returns {c=, tan_phi=, se_c=, se_tan_phi=, n=, dof=, r2=, residuals=}.
@@ -28,31 +30,15 @@ function M.fit(args)
     end
     sx, sy = sx + x[k], sy + y[k]
   end
-  local xm, ym = sx / n, sy / n
-  local sxx, sxy, syy = 0, 0, 0
-  for k = 1, n do
-    sxx = sxx + (x[k] - xm) ^ 2
-    sxy = sxy + (x[k] - xm) * (y[k] - ym)
-    syy = syy + (y[k] - ym) ^ 2
-  end
+  local xm = sx / n
+  local sxx = 0
+  for k = 1, n do sxx = sxx + (x[k] - xm) ^ 2 end
   if not (sxx > 1e-12 * xm * xm * n) then
     error("mohr_coulomb.fit: all points at one normal stress: needs at least 2 distinct overburdens", 2)
   end
-  local b = sxy / sxx
-  local a = ym - b * xm
-  local sse, residuals = 0, {}
-  for k = 1, n do
-    residuals[k] = y[k] - (a + b * x[k])
-    sse = sse + residuals[k] ^ 2
-  end
-  local fit = {c = a, tan_phi = b, n = n, dof = n - 2, residuals = residuals, sigma_mean = xm,
-               r2 = syy > 0 and 1 - sse / syy or 1}
-  if n > 2 then
-    local s = math.sqrt(sse / (n - 2))
-    fit.se_tan_phi = s / math.sqrt(sxx)
-    fit.se_c = s * math.sqrt(1 / n + xm * xm / sxx)
-  end
-  return fit
+  local line = line_fit.fit{x = x, y = y, what = "mohr_coulomb.fit"}
+  return {c = line.a, tan_phi = line.b, n = n, dof = line.dof, residuals = line.residuals, sigma_mean = xm, r2 = line.r2,
+          se_c = line.se_a, se_tan_phi = line.se_b}
 end
 
 -- Mean vertical stress at depth `depth` below a free surface under the bulk density

@@ -139,6 +139,22 @@ function M.cell(v)
   return v
 end
 
+-- CSV rows of records: one row per record, its fields in the order of cols (nil → empty, booleans
+-- as true/false), appended to rows (a new list when nil); returns rows.
+function M.cells(records, cols, rows)
+  rows = rows or {}
+  for _, r in ipairs(records) do
+    local line = {}
+    for k, col in ipairs(cols) do
+      local v = r[col]
+      if type(v) == "boolean" then v = tostring(v) end
+      line[k] = M.cell(v)
+    end
+    rows[#rows + 1] = line
+  end
+  return rows
+end
+
 -- ln Γ(x), x > 0 (Lanczos, g = 7, 9 terms; relative error ~1e-15).
 local LANCZOS = {0.99999999999980993, 676.5203681218851, -1259.1392167224028, 771.32342877765313,
                  -176.61502916214059, 12.507343278686905, -0.13857109526572012, 9.9843695780195716e-6,

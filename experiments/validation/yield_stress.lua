@@ -194,20 +194,7 @@ end
 local run_cols = {"set", "value", "seed", "slump_mm", "slump_flow_mm", "fill_solid_fraction", "slump_yield_stress_Pa",
                   "slump_at_rest", "vane_peak_torque_Nm", "vane_peak_angle_deg", "vane_peak_reached", "vane_yield_stress_Pa", "ratio",
                   "slump_wall_s", "vane_wall_s"}
--- One CSV row per record, the columns in order (booleans as true/false).
-local function csv_rows(records, cols, rows)
-  for _, r in ipairs(records) do
-    local line = {}
-    for k, col in ipairs(cols) do
-      local v = r[col]
-      if type(v) == "boolean" then v = tostring(v) end
-      line[k] = report.cell(v)
-    end
-    rows[#rows + 1] = line
-  end
-  return rows
-end
-csv_rows(runs, run_cols, run_rows)
+report.cells(runs, run_cols, run_rows)
 util.write_csv("ys_runs.csv", run_cols, run_rows)
 util.write_csv("ys_summary.csv", {"set", "value", "seeds", "vane_Pa", "vane_std_Pa", "slump_Pa", "slump_std_Pa", "ratio", "ratio_std",
                                   "within_target"}, sum_rows)
@@ -317,7 +304,7 @@ if fill_levels then
   local dcols = {"set", "value", "seed", "fill_level", "cup_height", "depth_mid_m", "fill_solid_fraction", "bulk_density", "sigma_v_Pa",
                  "sigma_janssen_Pa",
                  "particles", "peak_torque_Nm", "peak_angle_deg", "peak_reached", "vane_yield_stress_Pa", "ratio_to_slump", "wall_s"}
-  csv_rows(depth_runs, dcols, drows)
+  report.cells(depth_runs, dcols, drows)
   util.write_csv("ys_depth_runs.csv", dcols, drows)
   util.write_csv("ys_depth_fit.csv", {"set", "value", "seeds", "c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "tan_phi_pooled_se",
                                       "r2_pooled", "c_seed_mean_Pa", "c_seed_std_Pa", "tan_phi_seed_mean", "tan_phi_seed_std",

@@ -88,4 +88,23 @@ refuses({sigma = {100, 300}, tau = {100, 0 / 0}}, "NaN shear stress", "finite")
 refuses({sigma = {100, 300}, tau = {100}}, "unequal lengths", "shear stresses")
 refuses({sigma = nil, tau = {100}}, "no sigma", "needs sigma")
 
+-- lib/line_fit.lua, the line under both: three points worked by hand. x = -1, 0, 1; y = 0, 1, 5:
+-- x̄ = 0, ȳ = 2, Sxx = 2, Sxy = 5 → b = 2.5, a = 2; residuals 0.5, −1, 0.5, SSE = 1.5 on 1 dof;
+-- se(b) = √(1.5/2), se(a) = √(1.5/3), se at x0 = 2: √(1.5 (1/3 + 4/2)) = √3.5.
+local line_fit = require("lib.line_fit")
+local l = line_fit.fit{x = {-1, 0, 1}, y = {0, 1, 5}}
+check(near(l.a, 2, 1e-14) and near(l.b, 2.5, 1e-14), "line: a = %.17g, b = %.17g", l.a, l.b)
+check(near(l.se_b, math.sqrt(0.75), 1e-14) and near(l.se_a, math.sqrt(0.5), 1e-14), "line se: %.17g, %.17g", l.se_a, l.se_b)
+local v2, se2 = line_fit.at(l, 2)
+check(near(v2, 7, 1e-13) and near(se2, math.sqrt(3.5), 1e-13), "line at 2: %.17g +- %.17g", v2, se2)
+check(near(l.residuals[2], -1, 1e-14) and near(l.r2, 1 - 1.5 / 14, 1e-14), "line residuals / r2")
+-- A line through negative and zero x is fine for the line (not for Mohr–Coulomb), an exact pair has no se.
+l = line_fit.fit{x = {0, 0.01}, y = {100, 200}}
+check(near(l.b, 10000, 1e-9) and l.se_a == nil and select(2, line_fit.at(l, 0.002)) == nil, "two points: exact line, no se")
+for _, bad in ipairs({{x = {1}, y = {2}}, {x = {1, 1}, y = {2, 3}}, {x = {1, 2}, y = {2, 0 / 0}}, {x = {1, 2}, y = {2}}}) do
+  check(not pcall(line_fit.fit, bad), "line_fit accepted a bad input")
+end
+local ok, msg = pcall(line_fit.fit, {x = {1, 2}, y = {2, math.huge}, what = "vane yield stress"})
+check(not ok and tostring(msg):find("vane yield stress: y%[2%]"), "line_fit error names the fit and the point: %s", tostring(msg))
+
 paddy.result{ok = true}

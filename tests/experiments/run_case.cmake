@@ -510,6 +510,49 @@ elseif(CASE STREQUAL "validation_ys")
     message(FATAL_ERROR "one fill level: expected a refusal, got: ${se}")
   endif()
 
+elseif(CASE STREQUAL "validation_ys_resolution")
+  # The yield stress of both tests against the sphere size on tiny runs (vane 20 and 16 mm, slump 40
+  # and 32 mm lifted fast, 2 seeds): every run finishes, the files exist, each line has its 4 points, the value
+  # at the grain is the line's (a + b d) and the ratio there is the vane's over the slump's; a single
+  # diameter and a diameter out of range are refused.
+  set(tiny --set seeds=1,2 --set rheometer_diameters=0.02,0.016 --set slump_diameters=0.04,0.032
+      "--set" "rheometer_set=startup_angle=4,settle_max_time=0.6,min_rest_time=0.1,insert_time=0.01"
+      "--set" "slump_set=max_time=0.5,lift_speed=0.3" --set code_version=test)
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress_resolution.lua --out out --threads 1 ${tiny})
+  expect_code(${code} 0)
+  foreach(f ys_resolution_runs.csv ys_resolution_fit.csv ys_resolution.json ys_resolution.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  result(failed failed)
+  expect_number(${failed} EQUAL 0 "failed runs")
+  result(none without_yield_stress)
+  expect_number(${none} EQUAL 0 "runs without a yield stress")
+  result(nv vane_fit n)
+  expect_number(${nv} EQUAL 4 "points of the vane line")
+  result(ns slump_fit n)
+  expect_number(${ns} EQUAL 4 "points of the slump line")
+  result(a vane_fit at_d0_Pa)
+  result(b vane_fit slope_Pa_per_m)
+  result(vg grain vane value_Pa)
+  file(WRITE ${WORK}/check.lua "local a, b, vg = ${a}, ${b}, ${vg}\nassert(math.abs(a + b * 0.002 - vg) <= 1e-9 * math.max(1, math.abs(vg)), 'vane at the grain is not the line')\n")
+  result(sg grain slump value_Pa)
+  result(r grain ratio)
+  file(APPEND ${WORK}/check.lua "local sg, r = ${sg}, ${r}\nassert(math.abs(vg / sg - r) <= 1e-12 * math.abs(r), 'ratio at the grain')\npaddy.result{ok = true}\n")
+  run_paddy(code se run ${WORK}/check.lua --out chk)
+  expect_code(${code} 0)
+  foreach(bad "one;rheometer_diameters=0.02,0.02;at least 2 distinct diameters"
+              "big;rheometer_diameters=0.02,0.03;rheometer_diameters: 0.03 m is outside the allowed range")
+    list(GET bad 0 dir)
+    list(GET bad 1 setting)
+    list(GET bad 2 pattern)
+    run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress_resolution.lua --out ${dir} --threads 1 ${tiny}
+              --set ${setting})
+    expect_code(${code} 2)
+    if(NOT se MATCHES "${pattern}")
+      message(FATAL_ERROR "${setting}: expected a refusal with '${pattern}', got: ${se}")
+    endif()
+  endforeach()
+
 elseif(CASE STREQUAL "rheometer_confirm")
   # rheometer_mini's run with steady_confirm: a step is steady only when the stretch of
   # steady_windows windows before the compared ones passes the criterion too, so no step can be
