@@ -424,18 +424,18 @@ say("3. signatures of %d candidate(s), %d seed(s) each", #cands, S.signature_see
 -- replicate has): were it replicate s, the signature's noise (−f(seed_s)/probe) and the residual's
 -- (−mean of the replicates) would share f(seed_s), and z = gᵀPr/√a would have a positive mean under
 -- the null, largest for a signature that is mostly seed noise. "replicates" is the earlier rule.
+local function signature_seed(s)
+  return S.signature_baseline == "own" and seed0 + 400 + s or rep_points[s].seed
+end
 local base_runs = {}
 if S.signature_baseline == "own" then
   local base_points = {}
   for s = 1, S.signature_seeds do
-    base_points[s] = {theta = theta, lambda = {}, seed = seed0 + 400 + s, label = string.format("signature baseline seed %d", s)}
+    base_points[s] = {theta = theta, lambda = {}, seed = signature_seed(s), label = string.format("signature baseline seed %d", s)}
   end
   base_runs = evaluate("signature baselines", base_points)
 else
   for s = 1, S.signature_seeds do base_runs[s] = reps[s] end
-end
-local function signature_seed(s)
-  return S.signature_baseline == "own" and seed0 + 400 + s or rep_points[s].seed
 end
 local sig_points = {}
 for _, c in ipairs(cands) do

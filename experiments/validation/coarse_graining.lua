@@ -29,11 +29,7 @@ local P = paddy.parameters{
 }
 
 local diameters = report.numbers(P.diameters, "diameters") or error("diameters is empty")
-local seeds = report.numbers(P.seeds, "seeds") or error("seeds is empty")
-for k, s in ipairs(seeds) do
-  seeds[k] = math.tointeger(s) or error("seeds: " .. s .. " is not an integer")
-  if seeds[k] < 1 then error("seeds: " .. s .. " must be positive") end
-end
+local seeds = report.seed_list(P.seeds)
 table.sort(diameters)
 local script = P.slump_script
 if not script:match("^/") then script = report.script_dir() .. "/" .. script end

@@ -132,6 +132,17 @@ function M.duration(s)
   return string.format("%ds", s)
 end
 
+-- A comma-separated list of seeds as positive integers; errors name the setting's value (at the
+-- caller's line).
+function M.seed_list(text)
+  local seeds = M.numbers(text, "seeds") or error("seeds is empty", 2)
+  for k, s in ipairs(seeds) do
+    seeds[k] = math.tointeger(s) or error("seeds: " .. s .. " is not an integer", 2)
+    if seeds[k] < 1 then error("seeds: " .. s .. " must be positive", 2) end
+  end
+  return seeds
+end
+
 -- A value for a CSV cell (nil → empty).
 function M.cell(v)
   if v == nil then return "" end

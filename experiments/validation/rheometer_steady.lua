@@ -30,13 +30,9 @@ local P = paddy.parameters{
 
 local diameters = report.numbers(P.diameters, "diameters") or error("diameters is empty", 0)
 local step_times = report.numbers(P.step_times, "step_times") or error("step_times is empty", 0)
-local seeds = report.numbers(P.seeds, "seeds") or error("seeds is empty", 0)
+local seeds = report.seed_list(P.seeds)
 for _, t in ipairs(step_times) do
   if t < 0 or t > 100 then error(string.format("step_times: %g s is outside the allowed range 0-100 s", t), 0) end
-end
-for k, s in ipairs(seeds) do
-  seeds[k] = math.tointeger(s) or error("seeds: " .. s .. " is not an integer", 0)
-  if seeds[k] < 1 then error("seeds: " .. s .. " must be positive", 0) end
 end
 table.sort(diameters)
 local extra = report.assignments(P.rheometer_set, "rheometer_set")

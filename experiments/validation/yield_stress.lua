@@ -28,6 +28,7 @@
 local util = require("lib.util")
 local mohr_coulomb = require("lib.mohr_coulomb")
 local report = require("report")
+local ys_jobs = require("yield_stress_jobs")
 
 local P = paddy.parameters{
   {name = "parameter", default = "jkr_surface_energy", description = "the mud parameter that differs between the sets"},
@@ -68,20 +69,9 @@ else
   end
   if #levels == 0 then error(path .. ": no row for parameter '" .. P.table_parameter .. "' (give values= or table_parameter=)") end
 end
-local seeds = report.numbers(P.seeds, "seeds") or error("seeds is empty")
-for k, s in ipairs(seeds) do
-  seeds[k] = math.tointeger(s) or error("seeds: " .. s .. " is not an integer")
-  if seeds[k] < 1 then error("seeds: " .. s .. " must be positive") end
-end
+local seeds = report.seed_list(P.seeds)
 local dir = report.script_dir()
-local slump_extra = report.assignments(P.slump_set, "slump_set")
--- The rheometer runs only the start-up test (no speed steps) unless rheometer_set says otherwise.
-local rheo_extra = report.merge({speeds_rpm = "", down_sweep = false}, report.assignments(P.rheometer_set, "rheometer_set"))
-for _, extra in ipairs({slump_extra, rheo_extra}) do
-  if extra[P.parameter] or extra.seed or extra.particle_diameter then
-    error("slump_set / rheometer_set must not set " .. P.parameter .. ", seed or particle_diameter")
-  end
-end
+local slump_extra, rheo_extra = ys_jobs.extras(P.parameter, P.slump_set, P.rheometer_set)
 -- The depth series: fill levels of the vane runs (false: one run at rheometer.lua's fill level, the
 -- job parameters and keys as before the series existed).
 local fill_levels = report.numbers(P.vane_fill_levels, "vane_fill_levels") or false
@@ -110,10 +100,8 @@ local c = paddy.campaign{dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.
 local jobs = {}
 for li, l in ipairs(levels) do
   for _, s in ipairs(seeds) do
-    local sp = report.merge({particle_diameter = P.slump_diameter, progress = false, pictures = false, snapshot_interval = 0,
-                             [P.parameter] = l.value}, slump_extra)
-    local rp = report.merge({particle_diameter = P.rheometer_diameter, progress = false, pictures = false, snapshot_interval = 0,
-                             [P.parameter] = l.value}, rheo_extra)
+    local sp = ys_jobs.params(P.slump_diameter, P.parameter, l.value, slump_extra)
+    local rp = ys_jobs.params(P.rheometer_diameter, P.parameter, l.value, rheo_extra)
     if fill_levels then
       for fi, f in ipairs(fill_levels) do
         local cup = math.max(tonumber(rheo_extra.cup_height) or RHEOMETER_CUP_HEIGHT, f)

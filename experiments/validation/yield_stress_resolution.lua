@@ -12,12 +12,13 @@
 --   paddy run experiments/validation/yield_stress_resolution.lua --out results/ys_resolution \
 --       [--set rheometer_diameters=0.012,0.01,0.008,0.006 --set slump_diameters=0.02,0.014,0.01 --set seeds=1,2]
 --
--- The runs are jobs of a campaign (docs/campaign.md); their parameters are validation/yield_stress.lua's,
--- so a campaign_dir shared with that study reuses its runs. Outputs in --out: ys_resolution_runs.csv,
+-- The runs are jobs of a campaign (docs/campaign.md); their parameters are validation/yield_stress.lua's
+-- (validation/yield_stress_jobs.lua), so a campaign_dir shared with that study reuses its runs. Outputs in --out: ys_resolution_runs.csv,
 -- ys_resolution_fit.csv, ys_resolution.json (= result.json), ys_resolution.png.
 local util = require("lib.util")
 local line_fit = require("lib.line_fit")
 local report = require("report")
+local ys_jobs = require("yield_stress_jobs")
 
 local P = paddy.parameters{
   {name = "parameter", default = "jkr_surface_energy", description = "the mud parameter set to `value` in every run"},
@@ -52,19 +53,8 @@ local function diameters(text, name, max)
 end
 local d_vane = diameters(P.rheometer_diameters, "rheometer_diameters", 0.02)
 local d_slump = diameters(P.slump_diameters, "slump_diameters", 0.04)
-local seeds = report.numbers(P.seeds, "seeds") or error("seeds is empty", 0)
-for k, s in ipairs(seeds) do
-  seeds[k] = math.tointeger(s) or error("seeds: " .. s .. " is not an integer", 0)
-  if seeds[k] < 1 then error("seeds: " .. s .. " must be positive", 0) end
-end
-local slump_extra = report.assignments(P.slump_set, "slump_set")
--- As validation/yield_stress.lua: the rheometer runs only the start-up test.
-local rheo_extra = report.merge({speeds_rpm = "", down_sweep = false}, report.assignments(P.rheometer_set, "rheometer_set"))
-for _, extra in ipairs({slump_extra, rheo_extra}) do
-  if extra[P.parameter] or extra.seed or extra.particle_diameter then
-    error("slump_set / rheometer_set must not set " .. P.parameter .. ", seed or particle_diameter", 0)
-  end
-end
+local seeds = report.seed_list(P.seeds)
+local slump_extra, rheo_extra = ys_jobs.extras(P.parameter, P.slump_set, P.rheometer_set)
 
 local dir = report.script_dir()
 local c = paddy.campaign{dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign",
@@ -73,8 +63,7 @@ local c = paddy.campaign{dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.
 local jobs = {}
 local function submit(test, d, s)
   local script, extra = test == "vane" and "rheometer.lua" or "slump.lua", test == "vane" and rheo_extra or slump_extra
-  local params = report.merge({particle_diameter = d, progress = false, pictures = false, snapshot_interval = 0,
-                               [P.parameter] = P.value}, extra)
+  local params = ys_jobs.params(d, P.parameter, P.value, extra)
   jobs[#jobs + 1] = {test = test, d = d, seed = s, key = c:submit{script = dir .. "/../" .. script, params = params, seed = s}}
 end
 for _, s in ipairs(seeds) do
@@ -193,7 +182,7 @@ if P.pictures and fits.vane and fits.slump then
     end
   end
   util.write_columns("ys_resolution.dat", "test(1=vane,2=slump) d_mm tau_Pa", data)
-  local dmax = 1000 * math.max(table.unpack(d_slump))
+  local dmax = 1000 * math.max(math.max(table.unpack(d_slump)), math.max(table.unpack(d_vane)))
   picture = util.gnuplot("ys_resolution", string.format([[
 set title 'Yield stress against sphere diameter: vane start-up and slump, lines to d = 0'
 set xlabel 'sphere diameter d [mm]'; set ylabel 'yield stress [Pa]'; set grid; set key top left
