@@ -62,7 +62,8 @@
 #   4. Writes FILE (JSON: every run + a summary with medians + Paddy's ratios to LAMMPS and
 #      LIGGGHTS) and prints markdown tables; contacts per sphere = 2 x contacts / particles.
 #      A run is flagged "contended" when its processes got < 85 % of the CPU time they could
-#      use (cpu_share) or > 0.5 CPU was busy with other work just before it; a case's median is
+#      use (cpu_share; over the timed loop where the code reports its loop time, see
+#      contended() below) or > 0.5 CPU was busy with other work just before it; a case's median is
 #      taken over its uncontended runs when it has any (the table says "contended!" if not).
 #
 # Needs: bash, python3 (standard library), lmp / liggghts / mpirun for those codes,
@@ -433,12 +434,24 @@ def version(cmd):
     except Exception:
         return None
 
-# A run is "contended" when other processes shared its CPUs: its process got less than 85 %
-# of the CPU time it could have used, or more than 0.5 CPU was busy just before it started.
-# (Lowering the benchmark's nice value does not help on a kernel with autogroup scheduling:
-# every session competes as one group.)
+# A run is "contended" when other processes shared its CPUs: it got less than 85 % of the CPU
+# time it could have used, or more than 0.5 CPU was busy just before it started. (Lowering the
+# benchmark's nice value does not help on a kernel with autogroup scheduling: every session
+# competes as one group.) Where the code reports its timed loop's wall time (LAMMPS, LIGGGHTS),
+# the share is taken over the loop: process CPU / (threads x loop seconds), at most 1. Their
+# processes sleep through about 2.7 s of MPI start-up (measured on an idle machine: process wall
+# minus loop 2.7-2.8 s, process CPU minus loop 0.4 s), which the whole process's share counted as
+# lost to other processes. The loop share includes the set-up's CPU, so it can miss a contention
+# smaller than set-up CPU / loop time (about 0.4 s / loop seconds).
+def loop_cpu_share(r):
+    loop, cpu, t = r.get("loop_seconds"), r.get("process_cpu_seconds"), r.get("threads")
+    if loop and cpu is not None and t:
+        return min(1.0, cpu / (loop * t))
+    return None
 def contended(r):
-    share, busy = r.get("cpu_share"), r.get("busy_cpus_before")
+    share, busy = loop_cpu_share(r), r.get("busy_cpus_before")
+    if share is None:
+        share = r.get("cpu_share")
     return (share is not None and share < 0.85) or (busy is not None and busy > 0.5)
 for r in runs:
     r["contended"] = contended(r)
@@ -467,8 +480,10 @@ for (prob, law, code, variant, n, t, st), rs_all in sorted(groups.items()):
                         "cpu_seconds_rate_median": statistics.median(
                             [r.get("particle_steps_per_cpu_second") for r in rs
                              if r.get("particle_steps_per_cpu_second")] or [0]) or None,
+                        # the share the contention rule used (over the loop where known)
                         "cpu_share_median": statistics.median(
-                            [r.get("cpu_share") for r in rs if r.get("cpu_share") is not None] or [0]),
+                            [loop_cpu_share(r) if loop_cpu_share(r) is not None else r.get("cpu_share")
+                             for r in rs if loop_cpu_share(r) is not None or r.get("cpu_share") is not None] or [0]),
                         "busy_cpus_before_median": statistics.median(
                             [r.get("busy_cpus_before") for r in rs
                              if r.get("busy_cpus_before") is not None] or [0])})
