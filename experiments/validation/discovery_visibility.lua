@@ -1,8 +1,10 @@
 -- Correct names of a blind benchmark's effect trials by how visible each hidden effect was:
 -- its expected z = z_at_high · strength / high, with z_at_high from a sensitivity study of the
 -- same experiments and resolution (experiments/validation/discovery_sensitivity.lua, group
--- `group`). Reads two committed result files, runs no simulation (docs/discovery.md,
--- "Which hidden effects can be named").
+-- `group`). Then every trial by the misfit its data showed after the free parameters were
+-- calibrated (the p-value of Q0, from the data alone): effect trials named, null trials alarmed,
+-- outside trials wrongly named, per bin. Reads two committed result files, runs no simulation
+-- (docs/discovery.md, "Which hidden effects can be named").
 --
 --   paddy run experiments/validation/discovery_visibility.lua \
 --     --set blind=docs/results/discovery_blind_small60_summary.json \
@@ -15,6 +17,7 @@ local P = paddy.parameters{
   {name = "sensitivity", default = "", description = "a sensitivity study's result (discovery_sensitivity.lua's sensitivity.json)"},
   {name = "group", default = "slump", description = "the group of experiments of the sensitivity study that the benchmark ran"},
   {name = "edges", default = "3,6,10", description = "bin edges of the expected z, ascending"},
+  {name = "p_edges", default = "0.001,0.05", description = "bin edges of the misfit's p-value (q0_p), ascending in (0, 1)"},
 }
 if P.blind == "" or P.sensitivity == "" then
   error("discovery_visibility.lua: give --set blind=FILE and --set sensitivity=FILE", 0)
@@ -57,4 +60,19 @@ for _, b in ipairs(v.bins) do
                       b.to == math.huge and "inf" or string.format("%g", b.to), b.trials, b.right, b.wrong_names,
                       b.lower95 and string.format("%.1f %%", 100 * b.lower95) or "-"))
 end
-paddy.result{blind = P.blind, sensitivity = P.sensitivity, group = P.group, rows = v.rows, bins = v.bins}
+local p_edges = util.numbers(P.p_edges, "p_edges")
+for k, e in ipairs(p_edges) do
+  if not (e > 0 and e < 1) or (k > 1 and not (e > p_edges[k - 1])) then
+    error(string.format("discovery_visibility.lua: p_edges = %s: the edges must ascend inside (0, 1)", P.p_edges), 0)
+  end
+end
+local m = score.by_misfit(trials, p_edges, names)
+print()
+print("misfit p (Q0)    effect trials  named  wrong names  lower 95 %   null trials  alarms   outside  wrong names")
+for _, b in ipairs(m.bins) do
+  print(string.format("[%-6g, %-6g)  %13d  %5d  %11d  %10s   %11d  %6d   %7d  %11d", b.from, b.to, b.effect.trials, b.effect.right,
+                      b.effect.wrong_names, b.effect.lower95 and string.format("%.1f %%", 100 * b.effect.lower95) or "-",
+                      b.null.trials, b.null.alarms, b.outside.trials, b.outside.wrong_names))
+end
+paddy.result{blind = P.blind, sensitivity = P.sensitivity, group = P.group, rows = v.rows, bins = v.bins,
+             p_edges = p_edges, misfit_bins = m.bins}

@@ -56,6 +56,28 @@ check(vis.bins[1].trials == 1 and vis.bins[1].right == 0 and vis.bins[2].trials 
       "visibility bins")
 check(not pcall(score.by_visibility, {{trial = 1, truth = {kind = "candidate", name = "c", strength = 1}, answer = "none"}},
                 {a = {z_at_high = 1, high = 1}}, {3}, names), "a candidate the sensitivity study lacks is refused")
+-- By the misfit's p-value: bins [0, 0.001), [0.001, 0.05), [0.05, 1]; an edge value falls in the bin above it.
+local mb = score.by_misfit({
+  {trial = 1, truth = {kind = "candidate", name = "a"}, answer = "a", right = true, q0_p = 0},
+  {trial = 2, truth = {kind = "candidate", name = "b"}, answer = "a", right = false, q0_p = 0.0005},   -- wrong name
+  {trial = 3, truth = {kind = "candidate", name = "a"}, answer = "none", right = false, q0_p = 0.3},
+  {trial = 4, truth = {kind = "none"}, answer = "none", right = true, q0_p = 0.001},                   -- edge: middle bin
+  {trial = 5, truth = {kind = "none"}, answer = "ambiguous", right = false, q0_p = 0.02},              -- a false alarm
+  {trial = 6, truth = {kind = "outside"}, answer = "b", right = false, q0_p = 0.9},                    -- a wrong name
+  {trial = 7, truth = {kind = "outside"}, answer = "unknown", right = true, q0_p = 1},
+}, {0.001, 0.05}, names)
+local b1, b2, b3 = mb.bins[1], mb.bins[2], mb.bins[3]
+check(#mb.bins == 3 and b1.from == 0 and b1.to == 0.001 and b3.to == 1, "misfit bins' edges")
+check(b1.effect.trials == 2 and b1.effect.right == 1 and b1.effect.wrong_names == 1
+      and near(b1.effect.lower95, score.clopper_pearson_lower(1, 2), 0) and b1.null.trials == 0,
+      "misfit bin 1: two effect trials, one named, one wrong name")
+check(b2.null.trials == 2 and b2.null.alarms == 1 and near(b2.null.upper95, score.clopper_pearson_upper(1, 2), 0)
+      and b2.effect.trials == 0 and b2.effect.lower95 == nil, "misfit bin 2: the edge value and a false alarm")
+check(b3.effect.trials == 1 and b3.effect.right == 0 and b3.outside.trials == 2 and b3.outside.wrong_names == 1,
+      "misfit bin 3: a missed effect and an outside trial wrongly named")
+check(not pcall(score.by_misfit, {{trial = 9, truth = {kind = "none"}, answer = "none", right = true}}, {0.05}, names),
+      "a trial without q0_p is refused")
+check(not pcall(score.by_misfit, {}, {0.05, 0.01}, names), "descending p edges are refused")
 local s = score.summarise({
   {truth = {kind = "candidate", name = "a", strength = 2}, answer = "a", right = true, strength = 2.5, misfit_before = 4, misfit_after = 1},
   {truth = {kind = "candidate", name = "b", strength = 1}, answer = "ambiguous", right = false},

@@ -85,6 +85,55 @@ function M.by_visibility(trials, sensitivity, edges, candidate_names)
   return {rows = rows, bins = bins}
 end
 
+-- Every kind of trial by the misfit its data showed after the free parameters were calibrated:
+-- the p-value of the projected misfit Q0 (result.json q0_p, chi-square on its degrees of freedom),
+-- which the workflow computes from the data alone, so a bin is something a user can see. Splits the
+-- correct-name rate into the trials whose data show an effect and those the free parameters fit
+-- within the noise, and shows how often null trials reach each bin.
+-- trials: scored rows ({truth = {kind, name}, answer =, right =, q0_p =}); p_edges: ascending
+-- edges in (0, 1) (e.g. {0.001, 0.05}). A trial without q0_p is refused (a summary from before
+-- q0_p was recorded cannot be binned).
+-- Returns {bins = {{from =, to =, effect = {trials, right, wrong_names, lower95},
+--                   null = {trials, alarms, upper95}, outside = {trials, wrong_names}}, ...}}.
+function M.by_misfit(trials, p_edges, candidate_names)
+  for k, e in ipairs(p_edges) do
+    if not (e > 0 and e < 1) or (k > 1 and not (e > p_edges[k - 1])) then
+      error("score.by_misfit: p edges must ascend inside (0, 1)", 2)
+    end
+  end
+  local bins, lo = {}, 0
+  for k = 1, #p_edges + 1 do
+    local hi = p_edges[k] or 1
+    bins[k] = {from = lo, to = hi, effect = {trials = 0, right = 0, wrong_names = 0},
+               null = {trials = 0, alarms = 0}, outside = {trials = 0, wrong_names = 0}}
+    lo = hi
+  end
+  for _, t in ipairs(trials) do
+    local p = t.q0_p
+    if type(p) ~= "number" or p ~= p then
+      error(string.format("score.by_misfit: trial %s has no q0_p", tostring(t.trial)), 2)
+    end
+    local b = bins[#bins]
+    for k = 1, #p_edges do
+      if p < p_edges[k] then b = bins[k]; break end
+    end
+    local _, wrong = M.judge(t.truth, t.answer, candidate_names)
+    if t.truth.kind == "candidate" then
+      b.effect.trials, b.effect.right = b.effect.trials + 1, b.effect.right + (t.right and 1 or 0)
+      b.effect.wrong_names = b.effect.wrong_names + (wrong and 1 or 0)
+    elseif t.truth.kind == "none" then
+      b.null.trials, b.null.alarms = b.null.trials + 1, b.null.alarms + (t.answer ~= "none" and 1 or 0)
+    else
+      b.outside.trials, b.outside.wrong_names = b.outside.trials + 1, b.outside.wrong_names + (wrong and 1 or 0)
+    end
+  end
+  for _, b in ipairs(bins) do
+    b.effect.lower95 = b.effect.trials > 0 and M.clopper_pearson_lower(b.effect.right, b.effect.trials) or nil
+    b.null.upper95 = b.null.trials > 0 and M.clopper_pearson_upper(b.null.alarms, b.null.trials) or nil
+  end
+  return {bins = bins}
+end
+
 -- Whether an answer is right for a truth {kind = "none"|"candidate"|"outside", name =}:
 -- none → "none"; a candidate → its name; an effect outside the list → "unknown" or "none"
 -- (never a wrong name). Returns right, wrong_name.

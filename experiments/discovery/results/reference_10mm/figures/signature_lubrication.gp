@@ -1,5 +1,5 @@
 set terminal pngcairo size 900,700 noenhanced font 'sans,11'
-set output '/work/campaigns/real10/figures/signature_lubrication.png'
-set title 'lubrication: residual and signature x estimated strength 0.048 (sigma units; z = 1.42)'
+set output '/work/runs/real10/figures/signature_lubrication.png'
+set title 'lubrication: residual and signature x estimated strength 0.00918 (sigma units; z = 1.76)'
 set xlabel 'observable'; set ylabel 'measured - simulated [sigma]'; set grid; set key top right
-plot '/work/campaigns/real10/figures/signature_lubrication.dat' using 1:2 with impulses lw 4 lc rgb '#999' title 'residual', '' using 1:3 with linespoints pt 7 lc rgb '#a33' title 'signature x strength'
+plot '/work/runs/real10/figures/signature_lubrication.dat' using 1:2 with impulses lw 4 lc rgb '#999' title 'residual', '' using 1:3 with linespoints pt 7 lc rgb '#a33' title 'signature x strength'
