@@ -443,15 +443,13 @@ def version(cmd):
 # minus loop 2.7-2.8 s, process CPU minus loop 0.4 s), which the whole process's share counted as
 # lost to other processes. The loop share includes the set-up's CPU, so it can miss a contention
 # smaller than set-up CPU / loop time (about 0.4 s / loop seconds).
-def loop_cpu_share(r):
+def judged_cpu_share(r):
     loop, cpu, t = r.get("loop_seconds"), r.get("process_cpu_seconds"), r.get("threads")
     if loop and cpu is not None and t:
         return min(1.0, cpu / (loop * t))
-    return None
+    return r.get("cpu_share")
 def contended(r):
-    share, busy = loop_cpu_share(r), r.get("busy_cpus_before")
-    if share is None:
-        share = r.get("cpu_share")
+    share, busy = judged_cpu_share(r), r.get("busy_cpus_before")
     return (share is not None and share < 0.85) or (busy is not None and busy > 0.5)
 for r in runs:
     r["contended"] = contended(r)
@@ -482,8 +480,7 @@ for (prob, law, code, variant, n, t, st), rs_all in sorted(groups.items()):
                              if r.get("particle_steps_per_cpu_second")] or [0]) or None,
                         # the share the contention rule used (over the loop where known)
                         "cpu_share_median": statistics.median(
-                            [loop_cpu_share(r) if loop_cpu_share(r) is not None else r.get("cpu_share")
-                             for r in rs if loop_cpu_share(r) is not None or r.get("cpu_share") is not None] or [0]),
+                            [judged_cpu_share(r) for r in rs if judged_cpu_share(r) is not None] or [0]),
                         "busy_cpus_before_median": statistics.median(
                             [r.get("busy_cpus_before") for r in rs
                              if r.get("busy_cpus_before") is not None] or [0])})

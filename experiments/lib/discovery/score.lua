@@ -98,7 +98,7 @@ end
 function M.by_misfit(trials, p_edges, candidate_names)
   for k, e in ipairs(p_edges) do
     if not (e > 0 and e < 1) or (k > 1 and not (e > p_edges[k - 1])) then
-      error("score.by_misfit: p edges must ascend inside (0, 1)", 2)
+      error(string.format("p_edges = %s: the edges must ascend inside (0, 1)", table.concat(p_edges, ",")), 2)
     end
   end
   local bins, lo = {}, 0
