@@ -23,6 +23,7 @@ taken over the uncontended runs when there are any.
 Usage (from the repository root):
   bench/slump_phases.py [-t "1 2"] [-r 3] [-w 60] [-o bench/results/slump_phases.json] [-b build/bin/paddy]
                         [-V "old=--set free_rest_window=0" -V "new="]
+                        [-V "before=--binary /path/old/paddy" -V "after="]   (a variant may run another build)
                         [-- --set name=value ...]   (slump.lua's parameters for every run, e.g. max_time)
 """
 import argparse, json, os, resource, shlex, statistics, subprocess, sys, tempfile, time, datetime, platform
@@ -51,15 +52,23 @@ def variants():
         name, sep, args = v.partition("=")
         if not sep or not name.strip():
             raise SystemExit(f"--variant: '{v}' is not NAME=ARGS (e.g. old=--set free_rest_window=0)")
-        if name in [n for n, _ in out]:
+        if name in [v_[0] for v_ in out]:
             raise SystemExit(f"--variant: '{name}' given twice")
-        out.append((name.strip(), shlex.split(args)))
-    return out or [("", [])]
+        args = shlex.split(args)
+        binary = a.binary
+        if args[:1] == ["--binary"]:  # a variant may run another build: NAME=--binary PATH ARGS
+            if len(args) < 2:
+                raise SystemExit(f"--variant: '{v}': --binary needs a path")
+            binary, args = args[1], args[2:]
+            if not os.access(binary, os.X_OK):
+                raise SystemExit(f"--variant: '{v}': {binary} is not an executable file")
+        out.append((name.strip(), args, binary))
+    return out or [("", [], a.binary)]
 
 
-def one_run(threads, rep, variant=("", [])):
+def one_run(threads, rep, variant=("", [], None)):
     out = tempfile.mkdtemp(prefix=f"slump_t{threads}_r{rep}_")
-    cmd = [a.binary, "run", "bench/slump_phases.lua", "--threads", str(threads), "--out", out,
+    cmd = [variant[2] or a.binary, "run", "bench/slump_phases.lua", "--threads", str(threads), "--out", out,
            "--set", "progress=false"] + a.extra + variant[1]
     busy = quiet_machine.wait_for_quiet(a.wait)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -127,7 +136,7 @@ def one_run(threads, rep, variant=("", [])):
                     return r
         return None
     share = cpu / (wall * min(threads, os.cpu_count()))
-    return {"variant": variant[0], "variant_args": variant[1], "threads": threads, "repeat": rep,
+    return {"variant": variant[0], "variant_args": variant[1], "binary": variant[2] or a.binary, "threads": threads, "repeat": rep,
             "busy_cpus_before": busy, "contended": busy > quiet_machine.LIMIT or share < 0.85,
             "wall_s": wall, "cpu_s": cpu, "cpu_share": share,
             "phases_s": phases, "cpu_phases_s": cpu_phases, "callbacks_in_runs_s": nested,
@@ -155,7 +164,7 @@ def main():
                       f"{r['busy_cpus_before']:.2f}{' CONTENDED' if r['contended'] else ''}, "
                       + ", ".join(f"{k} {v:.1f}" for k, v in r["phases_s"].items()), file=sys.stderr, flush=True)
     summary = []
-    for (vname, _), t in [(v, t) for v in vs for t in threads]:
+    for vname, t in [(v[0], t) for v in vs for t in threads]:
         group = [r for r in runs if r["threads"] == t and r["variant"] == vname]
         rs = [r for r in group if not r["contended"]] or group
         def stat(vals):
@@ -175,7 +184,7 @@ def main():
                         "state_hashes": sorted({r["final_state_hash"] for r in rs})})
     doc = {"benchmark": "slump experiment, wall time per phase (bench/slump_phases.py)",
            "generated": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ"),
-           "label": a.label, "arguments": a.extra, "variants": [{"name": n, "arguments": v} for n, v in vs],
+           "label": a.label, "arguments": a.extra, "variants": [{"name": n, "arguments": v, "binary": b} for n, v, b in vs],
            "wait_s": a.wait, "host": {"logical_cpus": os.cpu_count(), "kernel": platform.release()},
            "summary": summary, "runs": runs}
     os.makedirs(os.path.dirname(a.out) or ".", exist_ok=True)

@@ -66,6 +66,8 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "pixel", default = 0.001, unit = "m", min = 1e-5, max = 0.01, description = "pixel of the top-view image"},
   {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
   {name = "progress", default = true, description = "progress line on stderr"},
+  {name = "neighbour_skin", default = 0.4, min = 0.05, max = 2,
+   description = "neighbour-list skin as a fraction of the largest sphere radius: speed only (a larger skin rebuilds the list less often and tests more pairs each step; another skin changes the results in the last bit, like another seed)"},
 }))
 
 if P.free_rest_window > 0 and P.free_rest_window < P.history_interval then
@@ -82,7 +84,7 @@ local seed = P.seed > 0 and P.seed or paddy.seed
 -- Coarse graining of the contact parameters from the reference 2 mm spheres.
 local cg = mud.coarse_grain(P, d)
 
-local sim = paddy.simulation{gravity = {0, 0, -9.81}, threads = paddy.threads}
+local sim = paddy.simulation{gravity = {0, 0, -9.81}, threads = paddy.threads, skin = P.neighbour_skin}
 local m_mud, m_steel = mud.setup(sim, P, cg.params)
 sim:add_wall{type = "plane", point = {0, 0, 0}, normal = {0, 0, 1}, material = m_steel, name = "plate"}
 

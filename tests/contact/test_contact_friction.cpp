@@ -11,7 +11,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cstdio>
+#include <random>
+#include <vector>
 
 using namespace ctest;
 using paddy::contact::ConstantTorqueRolling;
@@ -82,6 +85,109 @@ TEST_CASE("contact mindlin: spring stiffness 8 G* a, rotation, cap, damping, res
     c.run();
     CHECK(b.ft[0].x() == Approx(-mu * fn + st * 1e-6 * dt + ct * 1e-6).epsilon(1e-10));
   }
+}
+
+namespace {
+// One contact of the Mindlin law, written as the formula reads (Vec3 operations, branches): the
+// reference the batch loop of MindlinTangential must reproduce to rounding.
+struct MindlinStep {
+  Vec3 force = Vec3::Zero(), spring = Vec3::Zero();
+  bool slides = false;
+};
+MindlinStep mindlinReference(Vec3 xi, const Vec3& n, const Vec3& vt, double st, double m_eff, double limit,
+                             double factor, double dt) {
+  const double len2 = xi.squaredNorm();
+  if (len2 > 0.0) {
+    const Vec3 p = xi - xi.dot(n) * n;
+    xi = p.squaredNorm() > 0.0 ? Vec3(p * std::sqrt(len2 / p.squaredNorm())) : Vec3::Zero();
+  }
+  xi += vt * dt;
+  MindlinStep out;
+  out.force = -st * xi - factor * std::sqrt(st * m_eff) * vt;
+  out.spring = xi;
+  if (out.force.norm() > limit) {
+    out.slides = true;
+    out.force *= limit / out.force.norm();
+    out.spring = st > 0.0 ? Vec3(-out.force / st) : Vec3::Zero();
+  }
+  return out;
+}
+}  // namespace
+
+TEST_CASE("contact mindlin: the batch loop is the law of each contact, for every batch length", "[contact][mindlin]") {
+  // Batches of every length 1..128 (a vectorised loop's body and its scalar tail are separate
+  // code) of random contacts in every regime: inactive (spring cleared, no force), sticking,
+  // sliding (force at the cap, spring rescaled), no spring yet, a spring along the new normal
+  // (cleared by the rotation), zero stiffness (no force; the spring still accumulates).
+  const double mu = 0.4, e = 0.3, dt = 2e-6;
+  const double factor = 2.0 * std::sqrt(5.0 / 6.0) * std::abs(kBeta(e));
+  const MindlinTangential law(mu, e);
+  std::mt19937_64 rng(12345);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const auto unit = [&] {
+    Vec3 v;
+    do v = Vec3(u(rng), u(rng), u(rng)); while (v.norm() < 0.1);
+    return Vec3(v.normalized());
+  };
+  const Vec3 kBefore(0.25e-6, -0.5e-6, 1e-6);
+  auto b = std::make_unique<ContactBatch>();
+  std::vector<double> hist(3 * ContactBatch::kCapacity), before;
+  int regimes[6] = {0, 0, 0, 0, 0, 0};  // inactive, sticks, slides, empty spring, parallel spring, S_t = 0
+  double worst = 0.0;
+  for (std::size_t len = 1; len <= ContactBatch::kCapacity; ++len) {
+    b->n = len;
+    b->dt = dt;
+    b->setContiguousHistory(hist.data(), 3, len);
+    for (std::size_t k = 0; k < len; ++k) {
+      const int kind = static_cast<int>((k * 7 + len) % 6);
+      b->normal[k] = unit();
+      const double st = kind == 5 ? 0.0 : 1e4 * (1.5 + u(rng));
+      Vec3 xi = 1e-6 * (1.2 + u(rng)) * unit();
+      if (kind == 3) xi.setZero();
+      if (kind == 4) {  // exactly along the new normal: the rotation cannot keep it
+        b->normal[k] = (k % 2 ? 1.0 : -1.0) * Vec3::UnitZ();
+        xi = Vec3(0.0, 0.0, 2e-7);
+      }
+      b->vt[k] = (kind == 2 ? 1.0 : 1e-3) * (1.1 + u(rng)) * unit();
+      b->vt[k] -= b->vt[k].dot(b->normal[k]) * b->normal[k];
+      b->active[k] = kind == 0 ? 0 : 1;
+      b->stiffness_t[k] = st;
+      b->m_eff[k] = 1e-5 * (1.5 + u(rng));
+      b->fn_friction[k] = (kind == 2 ? 1e-4 : 1.0) * (1.5 + u(rng));
+      b->ft[k] = kBefore;  // the law adds to the force of the sub-models before it
+      hist[3 * k] = xi.x(), hist[3 * k + 1] = xi.y(), hist[3 * k + 2] = xi.z();
+    }
+    before = hist;
+    law.compute(*b, 0);
+    for (std::size_t k = 0; k < len; ++k) {
+      const Vec3 xi0(before[3 * k], before[3 * k + 1], before[3 * k + 2]);
+      const Vec3 spring(hist[3 * k], hist[3 * k + 1], hist[3 * k + 2]);
+      const Vec3 added = b->ft[k] - kBefore;
+      if (!b->active[k]) {
+        ++regimes[0];
+        CHECK(spring == Vec3::Zero());
+        CHECK(added == Vec3::Zero());
+        continue;
+      }
+      const double limit = mu * b->fn_friction[k];
+      const MindlinStep ref = mindlinReference(xi0, b->normal[k], b->vt[k], b->stiffness_t[k], b->m_eff[k], limit, factor, dt);
+      if (xi0 == Vec3::Zero()) ++regimes[3];
+      if (xi0.cross(b->normal[k]).norm() == 0.0 && xi0 != Vec3::Zero()) ++regimes[4];
+      if (b->stiffness_t[k] == 0.0) ++regimes[5];
+      ++regimes[ref.slides ? 2 : 1];
+      // Rounding: a few ulps of the force's scale (the sum ft + f adds the ulp of |kBefore|).
+      const double scale_f = ref.force.norm() + kBefore.norm(), scale_x = ref.spring.norm() + 1e-300;
+      const double err_f = (added - ref.force).norm() / scale_f, err_x = (spring - ref.spring).norm() / scale_x;
+      worst = std::max({worst, err_f, err_x});
+      CHECK(err_f < 1e-14);
+      CHECK(err_x < 1e-13);
+      if (ref.slides) CHECK(std::abs(added.norm() - limit) < 1e-14 * scale_f);
+    }
+  }
+  std::printf("[contact] mindlin batch: worst relative difference to the per-contact law %.2e; inactive %d, "
+              "sticking %d, sliding %d, empty spring %d, parallel spring %d, S_t = 0 %d\n", worst, regimes[0], regimes[1],
+              regimes[2], regimes[3], regimes[4], regimes[5]);
+  for (int r : regimes) CHECK(r > 100);
 }
 
 TEST_CASE("contact mindlin: sliding sphere decelerates at mu g and rolls at 5/7 v0", "[contact][mindlin]") {

@@ -58,7 +58,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   std::vector<Vec3>& wall_force = wall_scratch_force;
   wall_force.assign(n_wall, Vec3::Zero());
   // Velocities the contact laws see: at a step, predicted to the end of the step (see
-  // predictVelocity); otherwise the current ones.
+  // predictVelocities); otherwise the current ones.
   const bool predicted = pass == ForcePass::Step && predict_velocities;
   if (predicted) {
     v_eval.resize(n);
@@ -74,8 +74,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   {
     if (predicted) {
       // Before any thread clears the force arrays the prediction reads (implicit barrier).
-#pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) predictVelocity(s, i);
+      predictVelocities(s);  // an `omp for` over the particles, with its implicit barrier
     }
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();

@@ -123,11 +123,15 @@ void Simulation::Impl::sortSpatially(Simulation& s) {
   permute(prev_index);
 }
 
-void Simulation::Impl::predictVelocity(const Simulation& s, std::size_t i) {
+void Simulation::Impl::predictVelocities(const Simulation& s) {
   const ParticleArrays& p = s.p_;
   const double half = 0.5 * s.dt_;
-  v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
-  w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
+  const std::size_t n = p.size();
+#pragma omp for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
+    w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
+  }
 }
 
 namespace {

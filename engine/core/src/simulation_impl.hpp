@@ -96,11 +96,12 @@ struct Simulation::Impl {
   bool dt_explicit = false;
 
   // Velocities at the end of the step, predicted as v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m, used by
-  // velocity-dependent laws (damping) at a step. predictVelocity (integrator.cpp) does particle
-  // i; computeForces runs it over all particles at the start of its parallel region.
+  // velocity-dependent laws (damping) at a step. predictVelocities (integrator.cpp, beside the
+  // kicks it repeats) is a worksharing loop over all particles: computeForces calls it inside its
+  // parallel region (an orphaned `omp for`; outside a parallel region one thread does all).
   std::vector<Vec3> v_eval, w_eval;
   bool predict_velocities = true;
-  void predictVelocity(const Simulation& s, std::size_t i);
+  void predictVelocities(const Simulation& s);
 
   std::vector<ContactRecord> last_records;
   std::uint64_t active_contacts = 0;

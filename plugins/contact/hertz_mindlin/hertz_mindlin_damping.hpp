@@ -26,10 +26,14 @@ class HertzMindlinDamping final : public SubModel {
 
   void compute(ContactBatch& b, std::size_t) const override {
     if (factor_ == 0.0) return;
-    for (std::size_t k = 0; k < b.n; ++k) {
-      if (!b.active[k]) continue;
-      const double c = factor_ * std::sqrt(b.stiffness_n[k] * b.m_eff[k]);
-      b.fn[k] -= c * b.vn[k];
+    // Branch-free (an inactive contact keeps its fn) so that the loop vectorises, with
+    // -fno-math-errno for this plugin (plugins/contact/CMakeLists.txt).
+    const std::size_t n = b.n;
+    const double factor = factor_;  // a local: the stores to fn cannot change it
+    for (std::size_t k = 0; k < n; ++k) {
+      const double on = static_cast<double>(b.active[k] != 0);
+      const double c = factor * std::sqrt(b.stiffness_n[k] * b.m_eff[k]);
+      b.fn[k] -= on * c * b.vn[k];
     }
   }
 
