@@ -52,7 +52,7 @@ def variants():
         name, sep, args = v.partition("=")
         if not sep or not name.strip():
             raise SystemExit(f"--variant: '{v}' is not NAME=ARGS (e.g. old=--set free_rest_window=0)")
-        if name in [v_[0] for v_ in out]:
+        if name in [known for known, _, _ in out]:
             raise SystemExit(f"--variant: '{name}' given twice")
         args = shlex.split(args)
         binary = a.binary
@@ -66,9 +66,9 @@ def variants():
     return out or [("", [], a.binary)]
 
 
-def one_run(threads, rep, variant=("", [], None)):
+def one_run(threads, rep, variant):
     out = tempfile.mkdtemp(prefix=f"slump_t{threads}_r{rep}_")
-    cmd = [variant[2] or a.binary, "run", "bench/slump_phases.lua", "--threads", str(threads), "--out", out,
+    cmd = [variant[2], "run", "bench/slump_phases.lua", "--threads", str(threads), "--out", out,
            "--set", "progress=false"] + a.extra + variant[1]
     busy = quiet_machine.wait_for_quiet(a.wait)
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -136,7 +136,7 @@ def one_run(threads, rep, variant=("", [], None)):
                     return r
         return None
     share = cpu / (wall * min(threads, os.cpu_count()))
-    return {"variant": variant[0], "variant_args": variant[1], "binary": variant[2] or a.binary, "threads": threads, "repeat": rep,
+    return {"variant": variant[0], "variant_args": variant[1], "binary": variant[2], "threads": threads, "repeat": rep,
             "busy_cpus_before": busy, "contended": busy > quiet_machine.LIMIT or share < 0.85,
             "wall_s": wall, "cpu_s": cpu, "cpu_share": share,
             "phases_s": phases, "cpu_phases_s": cpu_phases, "callbacks_in_runs_s": nested,

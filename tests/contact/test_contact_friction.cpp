@@ -88,19 +88,15 @@ TEST_CASE("contact mindlin: spring stiffness 8 G* a, rotation, cap, damping, res
 }
 
 namespace {
-// One contact of the Mindlin law, written as the formula reads (Vec3 operations, branches): the
-// reference the batch loop of MindlinTangential must reproduce to rounding.
+// One contact of the Mindlin law, written as the formula reads (Vec3 operations, branches, the
+// shared rotateIntoPlane): the reference the batch loop of MindlinTangential must reproduce to rounding.
 struct MindlinStep {
   Vec3 force = Vec3::Zero(), spring = Vec3::Zero();
   bool slides = false;
 };
 MindlinStep mindlinReference(Vec3 xi, const Vec3& n, const Vec3& vt, double st, double m_eff, double limit,
                              double factor, double dt) {
-  const double len2 = xi.squaredNorm();
-  if (len2 > 0.0) {
-    const Vec3 p = xi - xi.dot(n) * n;
-    xi = p.squaredNorm() > 0.0 ? Vec3(p * std::sqrt(len2 / p.squaredNorm())) : Vec3::Zero();
-  }
+  paddy::contact::rotateIntoPlane(xi, n);
   xi += vt * dt;
   MindlinStep out;
   out.force = -st * xi - factor * std::sqrt(st * m_eff) * vt;

@@ -34,7 +34,7 @@ class MindlinTangential final : public SubModel {
     const std::size_t n = b.n;
     // 1. Gather each contact's spring (its history block lies elsewhere in memory) and the
     //    vectors the law reads into one array per component.
-    alignas(64) double xx[K], xy[K], xz[K], nx[K], ny[K], nz[K], vx[K], vy[K], vz[K], st[K], limit[K], damp[K];
+    alignas(64) double xx[K], xy[K], xz[K], nx[K], ny[K], nz[K], vx[K], vy[K], vz[K], st[K], limit[K], m_eff[K];
     for (std::size_t k = 0; k < n; ++k) {
       const double* h = b.historyOf(k, offset);
       xx[k] = h[0], xy[k] = h[1], xz[k] = h[2];
@@ -42,13 +42,13 @@ class MindlinTangential final : public SubModel {
       vx[k] = b.vt[k].x(), vy[k] = b.vt[k].y(), vz[k] = b.vt[k].z();
       st[k] = b.stiffness_t[k];
       limit[k] = mu_ * b.fn_friction[k];
-      damp[k] = b.m_eff[k];
+      m_eff[k] = b.m_eff[k];
     }
     // 2. The law (formula above) for the whole batch, branch-free so that it vectorises: every
     //    alternative is computed and one selected (-fno-math-errno for this plugin lets std::sqrt be
     //    one vector instruction; the scalar chain of square roots and divisions is latency-bound).
     double fx[K], fy[K], fz[K];
-    batchLaw(n, b.dt, xx, xy, xz, nx, ny, nz, vx, vy, vz, st, limit, damp, fx, fy, fz);
+    batchLaw(n, b.dt, xx, xy, xz, nx, ny, nz, vx, vy, vz, st, limit, m_eff, fx, fy, fz);
     // 3. Scatter: the force of an active contact, its new spring; an inactive one's spring is cleared.
     for (std::size_t k = 0; k < n; ++k) {
       double* h = b.historyOf(k, offset);
@@ -62,14 +62,14 @@ class MindlinTangential final : public SubModel {
   }
 
   // The law for n contacts in component arrays. In: spring x (from the last step), normal n,
-  // tangential velocity v, stiffness S_t, Coulomb limit μ_s fn_friction and, in `damp`, m*.
+  // tangential velocity v, stiffness S_t, Coulomb limit μ_s fn_friction and m*.
   // Out: force f; x becomes the new spring. Per contact:
   //   rotateIntoPlane: p = x − (x·n) n, x ← p |x|/|p| (0 when |p| = 0), then x += v dt;
   //   f = −S_t x − factor sqrt(S_t m*) v; if |f| > limit: f ← f limit/|f|, x ← −f/S_t (0 if S_t = 0).
   void batchLaw(std::size_t n, double dt, double* __restrict xx, double* __restrict xy, double* __restrict xz,
                 const double* __restrict nx, const double* __restrict ny, const double* __restrict nz,
                 const double* __restrict vx, const double* __restrict vy, const double* __restrict vz,
-                const double* __restrict st, const double* __restrict limit, const double* __restrict damp,
+                const double* __restrict st, const double* __restrict limit, const double* __restrict m_eff,
                 double* __restrict fx, double* __restrict fy, double* __restrict fz) const {
     for (std::size_t k = 0; k < n; ++k) {
       const double len2 = xx[k] * xx[k] + xy[k] * xy[k] + xz[k] * xz[k];
@@ -79,7 +79,7 @@ class MindlinTangential final : public SubModel {
       const double stretch = std::sqrt(len2 / p2);
       const double keep = p2 > 0.0 ? stretch : 0.0;
       const double sx = px * keep + vx[k] * dt, sy = py * keep + vy[k] * dt, sz = pz * keep + vz[k] * dt;
-      const double c = factor_ * std::sqrt(st[k] * damp[k]);
+      const double c = factor_ * std::sqrt(st[k] * m_eff[k]);
       const double gx = -st[k] * sx - c * vx[k], gy = -st[k] * sy - c * vy[k], gz = -st[k] * sz - c * vz[k];
       const double mag = std::sqrt(gx * gx + gy * gy + gz * gz);
       const bool slides = mag > limit[k];
