@@ -447,15 +447,23 @@ end
 local sig_runs = evaluate("signatures", sig_points)
 local signatures, dcands = {}, {}
 for k, c in ipairs(cands) do
-  local g = {}
+  local g, per_seed = {}, {}
   for i = 1, m do g[i] = 0 end
   for n, pt in ipairs(sig_points) do
     if pt.candidate == c then
-      for i = 1, m do g[i] = g[i] + (sig_runs[n][i] - base_runs[pt.s][i]) / c.probe / S.signature_seeds end
+      local gs = {}
+      for i = 1, m do
+        gs[i] = (sig_runs[n][i] - base_runs[pt.s][i]) / c.probe
+        g[i] = g[i] + gs[i] / S.signature_seeds
+      end
+      per_seed[#per_seed + 1] = gs
     end
   end
   signatures[c.name] = g
-  dcands[k] = {name = c.name, signature = g, low = c.low, high = c.high, relevant = c.relevant}
+  -- The per-seed secants: their spread is the signature's own noise, which the detection limits
+  -- allow for (doe detection.hpp); with one seed there is no spread to measure.
+  dcands[k] = {name = c.name, signature = g, low = c.low, high = c.high, relevant = c.relevant,
+               signature_seeds = #per_seed >= 2 and per_seed or nil}
 end
 -- The decision's thresholds: bootstrap null trials of the fitted noise model (Sigma re-estimated
 -- from S.replicates draws in every trial), or the chi^2 tables. n_avg: seeds behind a simulated value.
@@ -474,7 +482,8 @@ diag.thresholds = thr
 say("   decision: %s%s (Q0 = %.4g on %s df, p = %.3g)", diag.decision, diag.named and (" - " .. diag.named) or "",
     diag.q0 or 0 / 0, tostring(diag.q0_df), diag.q0_p or 0 / 0)
 for _, c in ipairs(diag.candidates or {}) do
-  say("   %-24s z = %7.3f  p_holm = %.3g  strength %.4g +- %.3g", c.name, c.z or 0 / 0, c.p_holm or 0 / 0, c.strength or 0 / 0, c.strength_se or 0 / 0)
+  say("   %-24s z = %7.3f  p_holm = %.3g  strength %.4g +- %.3g  detectable from %s", c.name, c.z or 0 / 0, c.p_holm or 0 / 0,
+      c.strength or 0 / 0, c.strength_se or 0 / 0, c.detection_limit and string.format("%.4g", c.detection_limit) or "nowhere")
 end
 outcome.signatures, outcome.diagnosis = signatures, diag
 

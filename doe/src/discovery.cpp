@@ -42,6 +42,14 @@ void checkInput(const DiagnoseInput& in) {
                      ", " + std::to_string(c.high) + ")");
     if (c.priorSd && !(*c.priorSd > 0 && std::isfinite(*c.priorSd)))
       throw DoeError(where + ": prior_sd must be finite and > 0");
+    if (c.signatureSeeds.size() == 1)
+      throw DoeError(where + ": signature_seeds has 1 entry: give at least 2 (their spread is the signature's noise) or none");
+    for (std::size_t s = 0; s < c.signatureSeeds.size(); ++s) {
+      const std::string at = where + ": signature_seeds[" + std::to_string(s + 1) + "]";
+      if (c.signatureSeeds[s].size() != m)
+        throw DoeError(at + " has " + std::to_string(c.signatureSeeds[s].size()) + " entries, the residual " + std::to_string(m));
+      if (!c.signatureSeeds[s].allFinite()) throw DoeError(at + " has a non-finite value");
+    }
   }
   if (!in.labels.empty() && static_cast<Eigen::Index>(in.labels.size()) != m)
     throw DoeError("labels: " + std::to_string(in.labels.size()) + " names for " + std::to_string(m) + " observables");
@@ -59,6 +67,8 @@ void checkInput(const DiagnoseInput& in) {
   if (!(o.absorbedTolerance >= 0 && o.absorbedTolerance < 1))
     throw DoeError("absorbed_tolerance: must be in [0, 1), got " + std::to_string(o.absorbedTolerance));
   if (!(o.minRangeZ >= 0)) throw DoeError("min_range_z: must be >= 0");
+  if (!(o.detectionPower > 0 && o.detectionPower < 1))
+    throw DoeError("detection_power: must be in (0, 1), got " + std::to_string(o.detectionPower));
 }
 
 std::optional<double> priorScale(const Candidate& c) {
@@ -188,6 +198,19 @@ Diagnosis diagnose(const DiagnoseInput& in) {
     c.inRange = c.score.strength + zHalf * c.score.strengthSe >= cand.low &&
                 c.score.strength - zHalf * c.score.strengthSe <= cand.high;
     c.plausible = c.passes && c.inRange;
+  }
+
+  // Detection limits (detection.hpp): the seeds' deviations from their mean, whitened and projected.
+  d.detectionThreshold = o.zThreshold ? *o.zThreshold
+                                      : boost::math::quantile(boost::math::complement(boost::math::normal(), o.alpha / static_cast<double>(family.size())));
+  const Projection P(J);
+  for (Eigen::Index k = 0; k < K; ++k) {
+    const auto& c = in.candidates[static_cast<std::size_t>(k)];
+    auto& rep = d.candidates[static_cast<std::size_t>(k)];
+    std::vector<Eigen::VectorXd> dev;
+    for (const auto& gs : c.signatureSeeds) dev.push_back(P.apply(W.apply(Eigen::VectorXd(gs - c.signature))));
+    rep.detection = detectability(rep.score.a, rep.score.b, signatureNoise(dev), d.detectionThreshold, o.detectionPower, c.relevant);
+    rep.detectable = rep.detection.detectionLimit <= c.high;
   }
 
   // 3. best plausible candidate

@@ -162,6 +162,12 @@ DiagnoseInput diagnoseInputFromJson(const json& o) {
     cand.high = bound(c, "high", std::numeric_limits<double>::infinity(), where);
     if (c.contains("prior_sd") && !c["prior_sd"].is_null()) cand.priorSd = number(c["prior_sd"], where + ".prior_sd");
     if (c.contains("relevant") && !c["relevant"].is_null()) cand.relevant = number(c["relevant"], where + ".relevant");
+    if (c.contains("signature_seeds") && !emptyTable(c["signature_seeds"])) {
+      const json& seeds = c["signature_seeds"];
+      if (!seeds.is_array()) throw DoeError(where + " (" + cand.name + ").signature_seeds: must be a list of signatures, one per seed");
+      for (std::size_t s = 0; s < seeds.size(); ++s)
+        cand.signatureSeeds.push_back(vector(seeds[s], where + " (" + cand.name + ").signature_seeds[" + std::to_string(s + 1) + "]"));
+    }
     in.candidates.push_back(cand);
   }
   if (o.contains("labels") && !o["labels"].is_null()) in.labels = names(o["labels"], "labels");
@@ -178,6 +184,7 @@ DiagnoseInput diagnoseInputFromJson(const json& o) {
   num("strong_margin", opt.strongMargin);
   num("absorbed_tolerance", opt.absorbedTolerance);
   num("min_range_z", opt.minRangeZ);
+  num("detection_power", opt.detectionPower);
   auto opt_num = [&](const char* key, std::optional<double>& field) {
     if (o.contains(key) && !o[key].is_null()) field = number(o[key], key);
   };
@@ -217,8 +224,17 @@ json diagnosisToJson(const Diagnosis& d) {
     jc["bayes_factor"] = s.logBayesFactor ? finiteOrNull(std::exp(*s.logBayesFactor)) : json(nullptr);
     jc["log_bayes_factor"] = s.logBayesFactor ? json(*s.logBayesFactor) : json(nullptr);
     jc["not_identifiable_reason"] = c.identifiable ? json(nullptr) : json(c.notIdentifiableReason);
+    const auto& det = c.detection;
+    jc["a_noise"] = det.aNoise;
+    jc["a_signal"] = det.aSignal;
+    jc["detection_limit"] = finiteOrNull(det.detectionLimit);
+    jc["detectable"] = c.detectable;
+    jc["strength_corrected"] = det.aSignal > 0 ? json(det.strength) : json(nullptr);
+    jc["strength_corrected_se"] = finiteOrNull(det.strengthSe);
+    jc["upper_limit"] = finiteOrNull(det.upperLimit);
     j["candidates"].push_back(jc);
   }
+  j["detection_threshold"] = d.detectionThreshold;
   j["confusability"] = toJson(d.confusability);
   j["whitened_residual"] = toJson(d.whitenedResidual);
   j["projected_residual"] = toJson(d.projectedResidual);
@@ -348,14 +364,16 @@ void printDiagnosis(std::ostream& out, const Diagnosis& d) {
   if (!d.separatingBlock.empty()) out << "separating block: " << d.separatingBlock << "\n";
   out << fmt::format("Q0 = {:.4g} on {} df (p = {:.4g}, Holm {:.4g}); misfit {:.4g}, after recalibration {:.4g}, after {} {:.4g}\n",
                      d.q0, d.q0Df, d.q0P, d.q0PHolm, d.misfit, d.misfitProjected, d.best.empty() ? "(none)" : d.best, d.misfitAfter);
-  out << fmt::format("{:<24} {:>9} {:>8} {:>9} {:>9} {:>11} {:>10} {:>9}  {}\n", "candidate", "a", "z", "p_holm", "strength",
-                     "strength_se", "Q_after", "BF", "status");
+  out << fmt::format("{:<24} {:>9} {:>8} {:>9} {:>9} {:>11} {:>10} {:>9} {:>11} {:>11}  {}\n", "candidate", "a", "z", "p_holm", "strength",
+                     "strength_se", "Q_after", "BF", "detect_from", "upper_limit", "status");
+  const auto limit = [](double v) { return std::isfinite(v) ? fmt::format("{:.4g}", v) : std::string("none"); };
   for (const auto& c : d.candidates) {
     const std::string status = !c.identifiable ? "not identifiable: " + c.notIdentifiableReason
                              : c.plausible ? "passes" : c.passes ? "passes, strength outside range" : "";
-    out << fmt::format("{:<24} {:>9.4g} {:>8.3f} {:>9.4g} {:>9.4g} {:>11.4g} {:>10.4g} {:>9}  {}\n", c.name, c.score.a, c.score.z,
+    out << fmt::format("{:<24} {:>9.4g} {:>8.3f} {:>9.4g} {:>9.4g} {:>11.4g} {:>10.4g} {:>9} {:>11} {:>11}  {}\n", c.name, c.score.a, c.score.z,
                        c.pHolm, c.score.strength, c.score.strengthSe, c.score.qAfter,
-                       c.score.logBayesFactor ? fmt::format("{:.3g}", std::exp(*c.score.logBayesFactor)) : "-", status);
+                       c.score.logBayesFactor ? fmt::format("{:.3g}", std::exp(*c.score.logBayesFactor)) : "-",
+                       limit(c.detection.detectionLimit), limit(c.detection.upperLimit), status);
   }
   out << fmt::format("\n{:<24} {:<12} {:>12} {:>13} {:>13}\n", "observable", "block", "residual", "standardised", "after");
   for (const auto& r : d.residualMap)

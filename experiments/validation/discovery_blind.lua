@@ -272,6 +272,12 @@ for i, t in ipairs(trials) do
     row.misfit_before, row.misfit_after = r.result.misfit_before, r.result.misfit_after
     row.simulations, row.wall_time_s = r.result.simulations, r.result.wall_time_s
     row.q0_p = r.result.q0_p
+    -- What the workflow said it could see of the hidden candidate (nil: nowhere / unbounded).
+    for _, c in ipairs(r.result.candidates or {}) do
+      if truths[i].kind == "candidate" and c.name == truths[i].name then
+        row.hidden_detection_limit, row.hidden_upper_limit = c.detection_limit, c.upper_limit
+      end
+    end
     say("trial %d: truth %s%s -> %s (%s)", t.no, truths[i].kind, truths[i].name and (" " .. truths[i].name) or "",
         row.answer, row.right and "right" or "wrong")
     scored[#scored + 1] = row
@@ -281,6 +287,7 @@ for i, t in ipairs(trials) do
 end
 local summary = score.summarise(scored, name_list)
 summary.particle_diameter, summary.truth_diameter, summary.candidate_set = d_work, d_truth, P.candidate_set
+summary.by_detection = score.by_detection(scored, names)
 summary.failed = #trials - #scored - pending_n
 summary.pending = pending_n   -- progress_of: trials not finished yet (0 for a benchmark run to its end)
 local wall, sims_n = 0, 0
@@ -291,4 +298,9 @@ summary.truth_simulations_per_trial = #experiments * R
 summary.truth_repeats = R
 paddy.write_json("blind_summary.json", {summary = summary, trials = scored})
 say("correct names %d/%d, false alarms %d/%d", summary.correct_names, summary.effect_trials, summary.false_alarms, summary.null_trials)
+do
+  local bd = summary.by_detection
+  say("declared detectable: %d/%d named; below the stated limit: %d/%d named; answers none with the upper limit above the truth: %d/%d",
+      bd.detectable.right, bd.detectable.trials, bd.undetectable.right, bd.undetectable.trials, bd.none_answers.covered, bd.none_answers.trials)
+end
 paddy.result{summary = summary, trials = scored}

@@ -78,6 +78,23 @@ check(b3.effect.trials == 1 and b3.effect.right == 0 and b3.outside.trials == 2 
 check(not pcall(score.by_misfit, {{trial = 9, truth = {kind = "none"}, answer = "none", right = true}}, {0.05}, names),
       "a trial without q0_p is refused")
 check(not pcall(score.by_misfit, {}, {0.05, 0.01}, names), "descending p edges are refused")
+-- By the workflow's own detection limits: declared detectable when the strength reaches the limit
+-- (nil: nowhere); `none` answers covered when the upper limit (nil: unbounded) reaches the strength.
+local bd = score.by_detection({
+  {truth = {kind = "candidate", name = "a", strength = 0.5}, answer = "a", right = true, hidden_detection_limit = 0.5},  -- at the limit
+  {truth = {kind = "candidate", name = "a", strength = 0.4}, answer = "b", right = false, hidden_detection_limit = 0.3}, -- wrong name
+  {truth = {kind = "candidate", name = "b", strength = 0.2}, answer = "none", right = false, hidden_detection_limit = 0.3,
+   hidden_upper_limit = 0.1},                                                                                          -- not covered
+  {truth = {kind = "candidate", name = "b", strength = 0.9}, answer = "none", right = false},                         -- nowhere, unbounded
+  {truth = {kind = "none"}, answer = "none", right = true, hidden_detection_limit = 0},                               -- not an effect trial
+}, names)
+check(bd.detectable.trials == 2 and bd.detectable.right == 1 and bd.detectable.wrong_names == 1
+      and near(bd.detectable.lower95, score.clopper_pearson_lower(1, 2), 0), "declared detectable: 2 trials, 1 named, 1 wrong name")
+check(bd.undetectable.trials == 2 and bd.undetectable.right == 0 and bd.undetectable.answers.none == 2, "below the limit: 2 answered none")
+check(bd.none_answers.trials == 2 and bd.none_answers.covered == 1, "none answers: the unbounded one covers, 0.1 < 0.2 does not")
+check(bd.per_candidate.a.trials == 2 and bd.per_candidate.a.detectable == 2 and bd.per_candidate.a.detectable_right == 1
+      and bd.per_candidate.b.trials == 2 and bd.per_candidate.b.detectable == 0 and bd.per_candidate.b.none_covered == 1,
+      "per candidate")
 local s = score.summarise({
   {truth = {kind = "candidate", name = "a", strength = 2}, answer = "a", right = true, strength = 2.5, misfit_before = 4, misfit_after = 1},
   {truth = {kind = "candidate", name = "b", strength = 1}, answer = "ambiguous", right = false},

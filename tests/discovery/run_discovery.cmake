@@ -227,6 +227,17 @@ elseif(CASE STREQUAL "blind_tiny" OR CASE STREQUAL "blind_full")
       message(FATAL_ERROR "null trial (truth '${null_truth}') answered '${null_answer}'")
     endif()
     message(STATUS "ok: null trial answered none")
+    # The strong effect, at the top of its range, was declared detectable there: its detection limit
+    # (what the workflow says it could see, from its own signatures and noise) lies at or below the
+    # hidden strength, and the summary counts the trial as declared detectable and named.
+    result_of(out limit trials 0 hidden_detection_limit)
+    result_of(out hidden trials 0 truth strength)
+    if(limit STREQUAL "" OR NOT limit LESS_EQUAL hidden)
+      message(FATAL_ERROR "strong hidden effect at ${hidden}: detection limit '${limit}' is not at or below it")
+    endif()
+    result_of(out det_right summary by_detection detectable right)
+    expect_number(${det_right} EQUAL 1 "declared-detectable trials named")
+    message(STATUS "ok: detection limit ${limit} <= hidden strength ${hidden}")
   endif()
   if(NOT EXISTS ${WORK}/out/blind_summary.json)
     message(FATAL_ERROR "missing blind_summary.json")

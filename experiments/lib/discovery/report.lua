@@ -21,7 +21,12 @@ function M.summary(o, files)
     cands[k] = {name = c.name, parameter = c.parameter, probe = c.probe, relevant = c.relevant, z = s.z, z_relevant = s.z_relevant,
                 p = s.p, p_relevant = s.p_relevant, p_holm = s.p_holm,
                 strength = s.strength, strength_se = s.strength_se, q_after = s.q_after, q_after_p = s.q_after_p,
-                bayes_factor = s.bayes_factor, identifiable = s.identifiable}
+                bayes_factor = s.bayes_factor, identifiable = s.identifiable,
+                -- what these experiments can see of it, its signature's seed noise allowed for
+                -- (doe detection.hpp; absent = infinite: not detectable at any strength)
+                detection_limit = s.detection_limit, detectable = s.detectable, upper_limit = s.upper_limit,
+                strength_corrected = s.strength_corrected, strength_corrected_se = s.strength_corrected_se,
+                signature_noise_share = (s.a or 0) > 0 and s.a_noise / s.a or nil}
   end
   local theta = {}
   for j, f in ipairs(o.input.free_parameters) do theta[f.parameter] = o.calibration.theta[j] end
@@ -245,10 +250,16 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
     rows[#rows + 1] = {esc(c.name), esc(c.parameter), num(c.probe), num(c.relevant or 0), num(s.z, 3), num(s.z_relevant or s.z, 3),
                        pval(s.p_relevant or s.p), pval(s.p_holm),
                        num(s.strength) .. " ± " .. num(s.strength_se, 3), num(s.q_after), pval(s.q_after_p), num(s.bayes_factor, 3),
-                       s.identifiable == false and "no" or "yes"}
+                       s.identifiable == false and "no" or "yes",
+                       (s.a or 0) > 0 and num(100 * s.a_noise / s.a, 3) .. " %" or "–",
+                       s.detection_limit and num(s.detection_limit, 3) or "nowhere",
+                       s.upper_limit and num(s.upper_limit, 3) or "unbounded"}
   end
-  add(table_html({"candidate", "parameter", "probe", "smallest relevant", "z", "z above relevant", "p", "p (Holm)", "strength", "misfit left", "p", "Bayes factor", "identifiable"}, rows,
-                 "Score test of each candidate on the residual that recalibration cannot absorb"))
+  add(table_html({"candidate", "parameter", "probe", "smallest relevant", "z", "z above relevant", "p", "p (Holm)", "strength", "misfit left", "p", "Bayes factor", "identifiable",
+                  "signature noise", "detectable from", "upper limit (95 %)"}, rows,
+                 "Score test of each candidate on the residual that recalibration cannot absorb. Signature noise: the share of the "
+                 .. "projected signature's size that is seed noise; detectable from: the strength named with 90 % power by the score "
+                 .. "(docs/discovery.md, \"Detection limits\"); upper limit: the largest strength these data leave possible"))
   if d.confusability then
     local header, crow = {""}, {}
     for _, c in ipairs(o.input.candidates) do header[#header + 1] = esc(c.name) end

@@ -134,6 +134,49 @@ function M.by_misfit(trials, p_edges, candidate_names)
   return {bins = bins}
 end
 
+-- Effect trials by what the workflow itself said it could see: the detection limit and the upper
+-- limit it gave for the hidden candidate (result.json candidates[].detection_limit, upper_limit;
+-- doe detection.hpp), computed from its own signatures and noise, without the truth. A trial is
+-- declared detectable when the hidden strength is at least that limit (nil: detectable nowhere).
+-- Checks the limits as statements: the declared-detectable trials should be named (at about the
+-- stated 90 % power, less where the signature is far from linear), and an answer `none` should come
+-- with an upper limit at or above the hidden strength (one-sided 95 %).
+-- trials: scored rows with hidden_detection_limit, hidden_upper_limit (nil = infinite).
+-- Returns {detectable = {trials, right, wrong_names, lower95}, undetectable = {trials, right,
+--          answers = {answer -> count}}, none_answers = {trials, covered, lower95},
+--          per_candidate = {name -> {trials, detectable, detectable_right, none, none_covered}}}.
+function M.by_detection(trials, candidate_names)
+  local det = {trials = 0, right = 0, wrong_names = 0}
+  local undet = {trials = 0, right = 0, answers = {}}
+  local none = {trials = 0, covered = 0}
+  local per = {}
+  for _, t in ipairs(trials) do
+    if t.truth.kind == "candidate" then
+      local _, wrong = M.judge(t.truth, t.answer, candidate_names)
+      local c = per[t.truth.name] or {trials = 0, detectable = 0, detectable_right = 0, none = 0, none_covered = 0}
+      per[t.truth.name] = c
+      c.trials = c.trials + 1
+      local limit = t.hidden_detection_limit
+      if limit ~= nil and t.truth.strength >= limit then
+        det.trials, det.right = det.trials + 1, det.right + (t.right and 1 or 0)
+        det.wrong_names = det.wrong_names + (wrong and 1 or 0)
+        c.detectable, c.detectable_right = c.detectable + 1, c.detectable_right + (t.right and 1 or 0)
+      else
+        undet.trials, undet.right = undet.trials + 1, undet.right + (t.right and 1 or 0)
+        undet.answers[t.answer] = (undet.answers[t.answer] or 0) + 1
+      end
+      if t.answer == "none" then
+        none.trials, c.none = none.trials + 1, c.none + 1
+        local up = t.hidden_upper_limit
+        if up == nil or up >= t.truth.strength then none.covered, c.none_covered = none.covered + 1, c.none_covered + 1 end
+      end
+    end
+  end
+  det.lower95 = det.trials > 0 and M.clopper_pearson_lower(det.right, det.trials) or nil
+  none.lower95 = none.trials > 0 and M.clopper_pearson_lower(none.covered, none.trials) or nil
+  return {detectable = det, undetectable = undet, none_answers = none, per_candidate = per}
+end
+
 -- Whether an answer is right for a truth {kind = "none"|"candidate"|"outside", name =}:
 -- none → "none"; a candidate → its name; an effect outside the list → "unknown" or "none"
 -- (never a wrong name). Returns right, wrong_name.

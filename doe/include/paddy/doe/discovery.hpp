@@ -41,6 +41,7 @@
 // the block with the largest T_B is named. 1 - c_B^2 alone (also reported) would favour blocks
 // where neither candidate has any signal.
 #pragma once
+#include "paddy/doe/detection.hpp"
 #include "paddy/doe/score_test.hpp"
 
 #include <Eigen/Dense>
@@ -63,6 +64,9 @@ struct Candidate {
   /// bias of the model (e.g. of its resolution) along the candidate's signature does not raise an
   /// alarm. 0 gives the test of lambda = 0 exactly. Must lie in [low, high).
   double relevant = 0.0;
+  /// The per-seed secants whose mean is `signature` (optional; at least 2, m entries each): their
+  /// spread is the signature's own noise (detection.hpp).
+  std::vector<Eigen::VectorXd> signatureSeeds;
 };
 
 struct DecisionOptions {
@@ -75,6 +79,7 @@ struct DecisionOptions {
   double strongMargin = std::numeric_limits<double>::infinity();
   double absorbedTolerance = 0.05;  ///< |P g| / |g| below this: absorbed by recalibration
   double minRangeZ = 1.0;         ///< high sqrt(a) below this: no sensitivity in the physical range
+  double detectionPower = 0.9;    ///< power at which detection limits are stated (detection.hpp)
   std::optional<double> zThreshold, q0Threshold, qAfterThreshold;  ///< empirical thresholds
 };
 
@@ -100,6 +105,10 @@ struct CandidateReport {
   /// best one (close evidence) even when its own test does not pass: it explains the data alike.
   bool inRange = false;
   double score_rank = 0;    ///< log BF or z^2/2, the ranking score
+  /// What the score can see, the signature's seed noise allowed for (detection.hpp); `detectable`:
+  /// the detection limit lies within [low, high].
+  Detectability detection;
+  bool detectable = false;
 };
 
 struct BlockSeparation {
@@ -129,6 +138,7 @@ struct Diagnosis {
   bool q0Significant = false;
   double misfit = 0, misfitProjected = 0, misfitAfter = 0;  ///< sqrt(.../m)
   std::vector<CandidateReport> candidates;
+  double detectionThreshold = 0;  ///< z* of the detection limits (detection.hpp)
   Eigen::MatrixXd confusability;
   Eigen::VectorXd whitenedResidual, projectedResidual;
   std::vector<ResidualRow> residualMap;
