@@ -3,7 +3,8 @@
 -- same experiments and resolution (experiments/validation/discovery_sensitivity.lua, group
 -- `group`). Then every trial by the misfit its data showed after the free parameters were
 -- calibrated (the p-value of Q0, from the data alone): effect trials named, null trials alarmed,
--- outside trials wrongly named, per bin. Reads two committed result files, runs no simulation
+-- outside trials wrongly named, per bin; and, for a summary that has them, the effect trials by the
+-- workflow's own detection limits (score.by_detection). Reads two committed result files, runs no simulation
 -- (docs/discovery.md, "Which hidden effects can be named").
 --
 --   paddy run experiments/validation/discovery_visibility.lua \
@@ -69,5 +70,25 @@ for _, b in ipairs(m.bins) do
                       b.effect.wrong_names, b.effect.lower95 and string.format("%.1f %%", 100 * b.effect.lower95) or "-",
                       b.null.trials, b.null.alarms, b.outside.trials, b.outside.wrong_names))
 end
+-- By the workflow's own detection limits (a summary written since they exist carries by_detection;
+-- an older one has no limits to score).
+local detection
+if blind.summary and blind.summary.by_detection then
+  detection = score.by_detection(trials, names)
+  print()
+  print("hidden candidate    effect trials  declared detectable  named of those  answered none  upper limit covers")
+  local cnames = {}
+  for n in pairs(detection.per_candidate) do cnames[#cnames + 1] = n end
+  table.sort(cnames)
+  for _, n in ipairs(cnames) do
+    local c = detection.per_candidate[n]
+    print(string.format("%-18s  %13d  %19d  %14d  %13d  %18d", n, c.trials, c.detectable, c.detectable_right, c.none, c.none_covered))
+  end
+  print(string.format("all: declared detectable %d, named %d (lower 95 %% %s); below the limit %d, named %d; none answers covered %d of %d",
+                      detection.detectable.trials, detection.detectable.right,
+                      detection.detectable.lower95 and string.format("%.1f %%", 100 * detection.detectable.lower95) or "-",
+                      detection.undetectable.trials, detection.undetectable.right, detection.none_answers.covered,
+                      detection.none_answers.trials))
+end
 paddy.result{blind = P.blind, sensitivity = P.sensitivity, group = P.group, rows = v.rows, bins = v.bins,
-             p_edges = p_edges, misfit_bins = m.bins}
+             p_edges = p_edges, misfit_bins = m.bins, detection = detection}
