@@ -61,6 +61,9 @@ NullThresholds bootstrapNullThresholds(const BootstrapNullInput& in) {
   DiagnoseInput d;
   d.jacobian = in.jacobian.size() ? in.jacobian : Eigen::MatrixXd(m, 0);
   d.candidates = in.candidates;
+  // Only z and Q0 of each null trial are used: the detection limits, which the per-seed
+  // signatures are for, would be computed 2000 times for nothing.
+  for (auto& c : d.candidates) c.signatureSeeds.clear();
   d.options = in.options;
   d.options.zThreshold.reset();
   d.options.q0Threshold.reset();

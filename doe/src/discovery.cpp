@@ -8,6 +8,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <set>
 
 namespace paddy::doe {
@@ -203,12 +204,13 @@ Diagnosis diagnose(const DiagnoseInput& in) {
   // Detection limits (detection.hpp): the seeds' deviations from their mean, whitened and projected.
   d.detectionThreshold = o.zThreshold ? *o.zThreshold
                                       : boost::math::quantile(boost::math::complement(boost::math::normal(), o.alpha / static_cast<double>(family.size())));
-  const Projection P(J);
+  std::optional<Projection> P;  // only for candidates given with per-seed signatures
   for (Eigen::Index k = 0; k < K; ++k) {
     const auto& c = in.candidates[static_cast<std::size_t>(k)];
     auto& rep = d.candidates[static_cast<std::size_t>(k)];
     std::vector<Eigen::VectorXd> dev;
-    for (const auto& gs : c.signatureSeeds) dev.push_back(P.apply(W.apply(Eigen::VectorXd(gs - c.signature))));
+    if (!c.signatureSeeds.empty() && !P) P.emplace(J);
+    for (const auto& gs : c.signatureSeeds) dev.push_back(P->apply(W.apply(Eigen::VectorXd(gs - c.signature))));
     rep.detection = detectability(rep.score.a, rep.score.b, signatureNoise(dev), d.detectionThreshold, o.detectionPower, c.relevant);
     rep.detectable = rep.detection.detectionLimit <= c.high;
   }

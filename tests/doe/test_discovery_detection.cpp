@@ -7,10 +7,8 @@
 #include "paddy/doe/discovery_json.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/null_calibration.hpp"
-#include "paddy/doe/error.hpp"
 #include "paddy/doe/score_test.hpp"
 
-#include <boost/math/distributions/normal.hpp>
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
