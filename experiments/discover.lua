@@ -343,14 +343,23 @@ local function fit(stage, start, dims, weights, valley)
 end
 
 -----------------------------------------------------------------------------------------------
--- 1. Calibrate the free parameters (measurement sigma as the weights: the seed scatter is not
--- known yet).
+-- 1. Calibrate the free parameters (the measurement errors as the weights: the seed scatter is not
+-- known yet). Errors the measurements share (an experiment's shared_error: one specimen read at
+-- several speeds; nil when none) are part of them: Sigma_meas = I + C (docs/discovery.md).
+local shared = stack.shared_covariance(input, L)
+local function measurement_weights()
+  local W = identity(m)
+  if shared then
+    for i = 1, m do for j = 1, m do W[i][j] = W[i][j] + shared[i][j] end end
+  end
+  return W
+end
 local theta = {}
 for j, f in ipairs(free) do theta[j] = f.start end
 local calib = {}
 say("1. calibration of %d free parameter(s) to %d observables of %d experiment(s), at most %d Gauss-Newton iteration(s)",
     p, m, #input.experiments, S.iterations)
-local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), identity(m))
+local cal = fit("calibration", {theta = theta, lambda = {}, seed = seed0}, theta_dims(), measurement_weights())
 calib.iterations, calib.scan, calib.surface_start = cal.history, cal.scan, cal.surface_start
 theta = cal.point.theta
 local J, f_hat = cal.J, cal.f
@@ -373,7 +382,7 @@ local function n_eff(n)
   if S.measured_repeats > 0 then return 1 / (1 / n + 1 / S.measured_repeats) end
   return n
 end
-local noise = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = n_eff(S.replicates)}
+local noise = doe.noise_covariance{replicates = reps, sigma = ones, n_avg = n_eff(S.replicates), measurement_covariance = shared}
 local cov = noise.covariance
 local located = {}
 for i, l in ipairs(L) do
@@ -470,7 +479,7 @@ end
 local function thresholds(n_avg, candidates, seed_covariance, replicates, jacobian)
   if S.thresholds ~= "bootstrap" then return {} end
   return doe.bootstrap_thresholds{seed_covariance = seed_covariance or noise.seed_covariance, replicates = replicates or S.replicates,
-                                  n_avg = n_avg, sigma = ones,
+                                  n_avg = n_avg, sigma = ones, measurement_covariance = shared,
                                   jacobian = jacobian or J_diag, candidates = candidates, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                   trials = S.bootstrap_trials, seed = seed0}
 end
@@ -545,7 +554,8 @@ if named then
       end
     end
   end
-  local noise_after = doe.noise_covariance{replicates = #conf >= 2 and pooled or reps, sigma = ones, n_avg = n_eff(S.confirm_seeds)}
+  local noise_after = doe.noise_covariance{replicates = #conf >= 2 and pooled or reps, sigma = ones, n_avg = n_eff(S.confirm_seeds),
+                                           measurement_covariance = shared}
   -- The resolution shift at the refit point: the same runs as step 2's, with the effect added
   -- (the shift a finer model makes depends on the model: wall adhesion acts through the spheres
   -- that touch the cone, whose number per area the sphere size sets). It replaces step 2's

@@ -46,6 +46,7 @@ NullThresholds bootstrapNullThresholds(const BootstrapNullInput& in) {
                    std::to_string(m));
   if (in.sigma.size() != 0 && in.sigma.size() != m)
     throw DoeError("sigma: " + std::to_string(in.sigma.size()) + " entries, expected " + std::to_string(m));
+  checkSharedMeasurement(in.sharedMeasurement, m);
   if (in.replicates < 2) throw DoeError("replicates: must be >= 2 (the number of seeds Sigma_seed was estimated from)");
   if (!(in.nAvg > 0.0) || !std::isfinite(in.nAvg)) throw DoeError("n_avg: must be > 0");
   if (in.trials < 20) throw DoeError("trials: must be >= 20");
@@ -55,7 +56,8 @@ NullThresholds bootstrapNullThresholds(const BootstrapNullInput& in) {
   const Eigen::VectorXd sigma = in.sigma.size() ? in.sigma : Eigen::VectorXd::Zero(m);
   Eigen::MatrixXd total = in.seedCovariance / in.nAvg;
   total.diagonal() += sigma.cwiseAbs2();
-  const Eigen::MatrixXd rootTotal = psdRoot(total, "covariance (sigma^2 + seed_covariance / n_avg)");
+  if (in.sharedMeasurement.size()) total += in.sharedMeasurement;
+  const Eigen::MatrixXd rootTotal = psdRoot(total, "covariance (sigma^2 + measurement_covariance + seed_covariance / n_avg)");
   const Eigen::MatrixXd rootSeed = psdRoot(in.seedCovariance, "seed_covariance");
 
   DiagnoseInput d;
@@ -77,7 +79,7 @@ NullThresholds bootstrapNullThresholds(const BootstrapNullInput& in) {
   for (int t = 0; t < in.trials; ++t) {
     d.residual = draw(rng, rootTotal);
     for (int r = 0; r < in.replicates; ++r) X.row(r) = draw(rng, rootSeed).transpose();
-    d.covariance = noiseCovariance(X, sigma, in.nAvg).covariance;
+    d.covariance = noiseCovariance(X, sigma, in.nAvg, in.sharedMeasurement).covariance;
     const Diagnosis out = diagnose(d);
     double z = -std::numeric_limits<double>::infinity();
     for (const auto& c : out.candidates)

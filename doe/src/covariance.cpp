@@ -50,9 +50,25 @@ double correlationShrinkage(const Eigen::MatrixXd& X) {
   return std::clamp(num / den, 0.0, 1.0);
 }
 
-NoiseCovariance noiseCovariance(const Eigen::MatrixXd& X, const Eigen::VectorXd& sigma, double nAvg) {
+void checkSharedMeasurement(const Eigen::MatrixXd& C, Eigen::Index m, const char* what) {
+  if (C.size() == 0) return;
+  const std::string w = what;
+  if (C.rows() != m || C.cols() != m)
+    throw DoeError(w + ": must be " + std::to_string(m) + " x " + std::to_string(m) + " (one row and column per observable), got " +
+                   std::to_string(C.rows()) + " x " + std::to_string(C.cols()));
+  if (!C.allFinite()) throw DoeError(w + ": has a non-finite entry");
+  const double scale = std::max(1e-300, C.cwiseAbs().maxCoeff());
+  if ((C - C.transpose()).cwiseAbs().maxCoeff() > 1e-10 * scale) throw DoeError(w + ": not symmetric");
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(C, Eigen::EigenvaluesOnly);
+  if (es.eigenvalues()(0) < -1e-10 * scale)
+    throw DoeError(w + ": not positive semi-definite (smallest eigenvalue " + std::to_string(es.eigenvalues()(0)) + ")");
+}
+
+NoiseCovariance noiseCovariance(const Eigen::MatrixXd& X, const Eigen::VectorXd& sigma, double nAvg,
+                                const Eigen::MatrixXd& shared) {
   checkReplicates(X);
   const auto m = X.cols();
+  checkSharedMeasurement(shared, m);
   if (sigma.size() != 0 && sigma.size() != m)
     throw DoeError("sigma: " + std::to_string(sigma.size()) + " entries but the replicates have " +
                    std::to_string(m) + " observables (columns)");
@@ -71,11 +87,12 @@ NoiseCovariance noiseCovariance(const Eigen::MatrixXd& X, const Eigen::VectorXd&
   for (Eigen::Index i = 0; i < m; ++i) R(i, i) = 1.0;
   out.seedCovariance = sd.asDiagonal() * R * sd.asDiagonal();
   out.covariance = out.seedCovariance / nAvg;
+  if (shared.size()) out.covariance += shared;
   for (Eigen::Index i = 0; i < m; ++i) {
     if (sigma.size()) out.covariance(i, i) += sigma(i) * sigma(i);
     if (!(out.covariance(i, i) > 0))
       throw DoeError("observable " + std::to_string(i + 1) +
-                     " has zero variance: no seed scatter over the replicates and no measurement sigma");
+                     " has zero variance: no seed scatter over the replicates and no measurement error");
   }
   return out;
 }

@@ -120,6 +120,14 @@ json toJson(const Eigen::MatrixXd& M) {
 
 json finiteOrNull(double v) { return std::isfinite(v) ? json(v) : json(nullptr); }
 
+// measurement_covariance: the errors the measurements share (noiseCovariance's C); absent, null
+// or an empty table = none.
+Eigen::MatrixXd sharedMeasurementOf(const json& o) {
+  if (!o.contains("measurement_covariance") || o["measurement_covariance"].is_null() || emptyTable(o["measurement_covariance"]))
+    return Eigen::MatrixXd();
+  return matrix(o["measurement_covariance"], "measurement_covariance");
+}
+
 }  // namespace
 
 json noiseCovarianceJson(const json& o) {
@@ -127,7 +135,8 @@ json noiseCovarianceJson(const json& o) {
   const Eigen::MatrixXd X = matrix(required(o, "replicates"), "replicates");
   const Eigen::VectorXd sigma = o.contains("sigma") && !o["sigma"].is_null() ? vector(o["sigma"], "sigma") : Eigen::VectorXd();
   const double nAvg = o.contains("n_avg") ? number(o["n_avg"], "n_avg") : 1.0;
-  const NoiseCovariance c = noiseCovariance(X, sigma, nAvg);
+  const Eigen::MatrixXd shared = sharedMeasurementOf(o);
+  const NoiseCovariance c = noiseCovariance(X, sigma, nAvg, shared);
   return {{"covariance", toJson(c.covariance)}, {"seed_covariance", toJson(c.seedCovariance)},
           {"shrinkage", c.shrinkage}, {"seed_sd", toJson(c.seedSd)}, {"replicates", X.rows()}, {"n_avg", nAvg}};
 }
@@ -346,6 +355,7 @@ json bootstrapThresholdsJson(const json& o) {
   in.options = parsed.options;
   in.seedCovariance = seedCov;
   in.sigma = o.contains("sigma") && !o["sigma"].is_null() ? vector(o["sigma"], "sigma") : Eigen::VectorXd();
+  in.sharedMeasurement = sharedMeasurementOf(o);
   in.replicates = static_cast<int>(number(required(o, "replicates"), "replicates"));
   in.nAvg = o.contains("n_avg") ? number(o["n_avg"], "n_avg") : 1.0;
   if (o.contains("trials")) in.trials = static_cast<int>(number(o["trials"], "trials"));

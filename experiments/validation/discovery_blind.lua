@@ -32,6 +32,10 @@ local P = paddy.parameters{
   {name = "cone_scales", default = "", description = "sizes of the slump cone as factors of the standard one (100/200/300 mm), comma-separated: one slump experiment per size and lift speed ('' = the standard cone only); a larger cone loads the mud more, which load-dependent effects feel and surface forces do not"},
   {name = "vane_scale", default = 0, min = 0, max = 8,
    description = "add the vane rheometer scaled by this factor from the standard 100 mm cup (lib/discovery/benchmark.lua: start-up peak and two steady torques; 0 = none, else 1-8): a flowing strength beside the slump's static one"},
+  {name = "vane_speeds", default = "", description = "steady speeds of the vane, comma-separated rpm ('' = 10,40); with vane_scale > 0"},
+  {name = "vane_shared_sd", default = 0, min = 0, max = 0.5,
+   description = "the vane's torques read as one specimen: a relative error of this sd that the sweep's torques and its start-up peak share (the input's shared_error), each torque with its own vane_reading_sd beside it; 0 = every torque its own 5 % error"},
+  {name = "vane_reading_sd", default = 0.015, min = 0.001, max = 0.5, description = "each vane torque's own relative reading error when vane_shared_sd > 0"},
   {name = "truth_repeats", default = 1, type = "integer", min = 1, max = 20,
    description = "truth runs (seeds) per measurement: the measured value is their mean, as a slump test is reported as the mean of repeated tests (the reference: 10), and the input says measured_repeats = this"},
   {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
@@ -78,7 +82,8 @@ if P.signature_seeds > 0 then settings.signature_seeds = P.signature_seeds end
 -- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
 -- every cone size, and the vane when vane_scale > 0.
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,
-                                      cone_scales = P.cone_scales, vane_scale = P.vane_scale}
+                                      cone_scales = P.cone_scales, vane_scale = P.vane_scale, vane_speeds = P.vane_speeds,
+                                      vane_shared_sd = P.vane_shared_sd, vane_reading_sd = P.vane_reading_sd}
 
 -- Trials in a fixed order, their truths drawn from their seeds.
 local trials = {}
@@ -201,6 +206,13 @@ for i, t in ipairs(trials) do
     end
     if pending then goto next_experiment end
     local measured, sigma = {}, {}
+    -- A shared error: one factor for the listed keys of this experiment (drawn only then, so the
+    -- noise of experiments without one is what it was).
+    local shared_factor, shared_keys = 1, {}
+    if e.shared_error then
+      shared_factor = 1 + e.shared_error.rel_sd * gauss()
+      for _, key in ipairs(e.shared_error.keys) do shared_keys[key] = true end
+    end
     for _, o in ipairs(e.observables) do
       local v = assert(stack.extract(runs[1], o.key))
       for r = 2, R do
@@ -211,12 +223,12 @@ for i, t in ipairs(trials) do
       local mv, sv = {}, {}
       for n, x in ipairs(v) do
         sv[n] = bench.noise_sd(o, x)
-        mv[n] = x + sv[n] * gauss()
+        mv[n] = (shared_keys[o.key] and shared_factor or 1) * x + sv[n] * gauss()
       end
       if #v == 1 then mv, sv = mv[1], sv[1] end
       measured[o.key], sigma[o.key] = mv, sv
     end
-    exps[j] = {name = e.name, script = e.script, set = e.set, measured = measured, sigma = sigma}
+    exps[j] = {name = e.name, script = e.script, set = e.set, measured = measured, sigma = sigma, shared_error = e.shared_error}
     ::next_experiment::
   end
   if pending then goto next_trial end

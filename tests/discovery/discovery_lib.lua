@@ -199,4 +199,34 @@ t = good(); t.candidates[1].relevant = 0.03
 check(input.read(paddy.write_json(dir .. "/relevant_input.json", t)).candidates[1].relevant == 0.03 and g.candidates[1].relevant == nil,
       "relevant is read, and absent by default")
 
+-- A shared error: read, refused when malformed, and its covariance C_ij = rel^2 y_i y_j over the
+-- listed keys of its experiment only (y = measured / sigma).
+t = good(); t.experiments[1].shared_error = {rel_sd = 0.05, keys = {"profile_mm"}}
+t.experiments[2] = {name = "vane", script = "rheometer.lua", measured = {torque_Nm = {10, 20}}, sigma = {torque_Nm = 0.2}}
+local sh = input.read(paddy.write_json(dir .. "/shared_input.json", t))
+check(sh.experiments[1].shared_error.rel_sd == 0.05 and sh.experiments[1].shared_error.keys.profile_mm
+      and g.experiments[1].shared_error == nil, "shared_error is read, and absent by default")
+local SL = stack.layout(sh)   -- slow profile_mm[1], [2], slow slump_mm, vane torque_Nm[1], [2]
+local C = stack.shared_covariance(sh, SL)
+check(#C == 5 and near(C[1][2], 0.05 ^ 2 * (1 / 2) * (2 / 2), 1e-15) and near(C[2][2], 0.05 ^ 2, 1e-15), "C within the shared key")
+check(C[1][3] == 0 and C[3][3] == 0 and C[4][4] == 0 and C[1][4] == 0, "no shared error outside the listed keys or across experiments")
+check(stack.shared_covariance(g, stack.layout(g)) == nil, "no shared error: nil")
+t = good(); t.experiments[1].shared_error = {rel_sd = 0, keys = {"slump_mm"}}; bad(t, "experiments%[1%]%.shared_error%.rel_sd = 0 must be in %(0, 1%]")
+t = good(); t.experiments[1].shared_error = {rel_sd = 0.05, keys = {"torque_Nm"}}
+bad(t, "experiments%[1%]%.shared_error%.keys%[1%] = torque_Nm is not a measured key of this experiment")
+t = good(); t.experiments[1].shared_error = {rel_sd = 0.05, keys = {}}; bad(t, "shared_error%.keys must be a non%-empty list")
+t = good(); t.experiments[1].shared_error = {rel = 0.05, keys = {"slump_mm"}}; bad(t, "shared_error: unknown key 'rel' %(allowed: rel_sd, keys%)")
+
+-- The benchmark's vane read as one specimen: its torques share the fill's error.
+local bench = require("lib.discovery.benchmark")
+local ve = bench.experiments{variant = "small", vane_scale = 4, vane_speeds = "10,40,160", vane_shared_sd = 0.05}
+local vane = ve[#ve]
+check(vane.set.speeds_rpm == "10,40,160" and vane.shared_error.rel_sd == 0.05 and vane.observables[1].rel == bench.VANE_READING_SD,
+      "benchmark vane: speeds, shared error and reading error")
+local plain = bench.experiments{variant = "small", vane_scale = 4}
+check(plain[#plain].shared_error == nil and plain[#plain].observables[1].rel == 0.05 and plain[#plain].set.speeds_rpm == "10,40",
+      "benchmark vane by default: two speeds, 5 % each")
+local okv, ev = pcall(bench.experiments, {variant = "small", vane_scale = 4, vane_speeds = "10,400"})
+check(not okv and ev:match("vane_speeds = 10,400: each speed must be in %(0, 300%] rpm"), "vane speed range: %s", tostring(ev))
+
 paddy.result{ok = true}

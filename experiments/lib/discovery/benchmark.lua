@@ -44,6 +44,14 @@ M.SLUMP_OBSERVABLES = {{key = "slump_mm", abs = 3}, {key = "slump_flow_mm", abs 
 -- rheometer's torque is read far better; 5 % is the scatter of repeated fills of a real mud).
 M.VANE_OBSERVABLES = {{key = "torque_Nm", abs = 0.001, rel = 0.05}, {key = "startup.peak_torque_Nm", abs = 0.001, rel = 0.05}}
 
+-- The vane read as a rheometer reads one specimen (o.vane_shared_sd > 0): the scatter between fills
+-- (5 %) is one factor 1 + eps that every torque of the sweep and the start-up peak share (the
+-- input's shared_error), and each torque keeps only its own reading error, VANE_READING_SD.
+M.VANE_READING_SD = 0.015
+function M.vane_observables(reading_sd)
+  return {{key = "torque_Nm", abs = 0.001, rel = reading_sd}, {key = "startup.peak_torque_Nm", abs = 0.001, rel = reading_sd}}
+end
+
 function M.noise_sd(o, value)
   return math.max(o.abs, (o.rel or 0) * math.abs(value))
 end
@@ -57,9 +65,9 @@ M.SLUMP_COMMON = {settle_max_time = 1.5, min_rest_time = 0.2, max_time = 4}
 -- field vane is this size). Two speeds (the steady torque at each) after a start-up test (its peak
 -- torque): a static strength and a flowing one.
 M.VANE_SPEEDS_RPM = "10,40"
-function M.vane_set(scale)
+function M.vane_set(scale, speeds)
   return {cup_diameter = 0.1 * scale, cup_height = 0.12 * scale, fill_level = 0.12 * scale, vane_diameter = 0.05 * scale,
-          vane_height = 0.06 * scale, vane_bottom = 0.03 * scale, speeds_rpm = M.VANE_SPEEDS_RPM, down_sweep = false,
+          vane_height = 0.06 * scale, vane_bottom = 0.03 * scale, speeds_rpm = speeds or M.VANE_SPEEDS_RPM, down_sweep = false,
           startup_rpm = 5, startup_angle = 60, max_step_time = 3, settle_max_time = 1.5}
 end
 
@@ -67,7 +75,9 @@ end
 -- 0.3 m/s); o.lift_speeds ('' = the variant's) replaces the slump experiments by one per speed;
 -- o.cone_scales ('' = the standard cone) runs each in cones of the given sizes (a scale other than
 -- 1 appends _cone<percent> to the name and scales the cone's three dimensions); o.vane_scale > 0
--- adds the vane rheometer at that scale.
+-- adds the vane rheometer at that scale, at o.vane_speeds (rpm, comma-separated; '' = 10,40), its
+-- torques each with 5 % error (o.vane_shared_sd = 0) or sharing a fill's error of vane_shared_sd
+-- with their own reading error o.vane_reading_sd (default VANE_READING_SD) beside it.
 function M.experiments(o)
   local exps
   if o.variant == "small" then
@@ -111,8 +121,24 @@ function M.experiments(o)
   local vs = o.vane_scale or 0
   if vs ~= 0 then
     if vs < 1 or vs > 8 then error(string.format("discovery benchmark: vane_scale = %g: must be 0 (no vane) or in [1, 8]", vs), 0) end
-    exps[#exps + 1] = {name = string.format("vane_x%g", vs):gsub("%.", "_"), script = "rheometer.lua", set = M.vane_set(vs),
-                       observables = M.VANE_OBSERVABLES}
+    local speeds = (o.vane_speeds or "") ~= "" and o.vane_speeds or nil
+    if speeds then
+      for _, v in ipairs(util.numbers(speeds, "vane_speeds")) do
+        if v <= 0 or v > 300 then error(string.format("discovery benchmark: vane_speeds = %s: each speed must be in (0, 300] rpm", speeds), 0) end
+      end
+    end
+    local e = {name = string.format("vane_x%g", vs):gsub("%.", "_"), script = "rheometer.lua", set = M.vane_set(vs, speeds),
+               observables = M.VANE_OBSERVABLES}
+    local shared = o.vane_shared_sd or 0
+    if shared > 0 then
+      local reading = o.vane_reading_sd or M.VANE_READING_SD
+      if shared > 0.5 or not (reading > 0 and reading <= 0.5) then
+        error(string.format("discovery benchmark: vane_shared_sd = %g and vane_reading_sd = %g: each must be in (0, 0.5]", shared, reading), 0)
+      end
+      e.observables = M.vane_observables(reading)
+      e.shared_error = {rel_sd = shared, keys = {"torque_Nm", "startup.peak_torque_Nm"}}
+    end
+    exps[#exps + 1] = e
   end
   return exps
 end

@@ -87,6 +87,27 @@ function M.read(path)
     for key in pairs(e.sigma) do
       if e.measured[key] == nil then fail(path, string.format("%s.sigma.%s has no measured value", where, key)) end
     end
+    -- shared_error: a relative error that every entry of the listed keys shares (one specimen read
+    -- at several speeds: all multiplied by the same 1 + eps, eps ~ N(0, rel_sd^2)); sigma then
+    -- holds each entry's own reading error.
+    if e.shared_error ~= nil then
+      local se, w = e.shared_error, where .. ".shared_error"
+      if type(se) ~= "table" then fail(path, w .. " must be an object {rel_sd = number, keys = [measured keys]}") end
+      for k in pairs(se) do
+        if k ~= "rel_sd" and k ~= "keys" then fail(path, string.format("%s: unknown key '%s' (allowed: rel_sd, keys)", w, tostring(k))) end
+      end
+      local rel = number(path, w .. ".rel_sd", se.rel_sd, 0, 1)
+      if not (rel > 0) then fail(path, string.format("%s.rel_sd = %g must be in (0, 1]", w, rel)) end
+      if type(se.keys) ~= "table" or #se.keys == 0 then fail(path, w .. ".keys must be a non-empty list of measured keys") end
+      local shared = {}
+      for n, key in ipairs(se.keys) do
+        if type(key) ~= "string" or e.measured[key] == nil then
+          fail(path, string.format("%s.keys[%d] = %s is not a measured key of this experiment", w, n, tostring(key)))
+        end
+        shared[key] = true
+      end
+      x.shared_error = {rel_sd = rel, keys = shared}
+    end
     input.experiments[i] = x
   end
 

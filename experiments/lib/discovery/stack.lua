@@ -43,6 +43,32 @@ function M.layout(input)
   return L
 end
 
+-- The measurement errors the entries share (the experiments' shared_error), in standardised
+-- units: C_ij = rel_sd^2 y_i y_j for entries i, j of the same experiment's shared keys, y_i =
+-- measured_i / sigma_i; 0 elsewhere. nil when no experiment has one (Sigma_meas = I).
+function M.shared_covariance(input, L)
+  local rel = {}
+  for _, e in ipairs(input.experiments) do
+    if e.shared_error then rel[e.name] = e.shared_error end
+  end
+  if next(rel) == nil then return nil end
+  local m, C = #L, {}
+  for i = 1, m do
+    C[i] = {}
+    local li = L[i]
+    local si = rel[li.block]
+    for j = 1, m do
+      local lj = L[j]
+      if si and lj.block == li.block and si.keys[li.key] and si.keys[lj.key] then
+        C[i][j] = si.rel_sd ^ 2 * (li.measured / li.sigma) * (lj.measured / lj.sigma)
+      else
+        C[i][j] = 0
+      end
+    end
+  end
+  return C
+end
+
 -- Labels with the grid value of vector entries (from one set of results: the grids are fixed).
 function M.label(L, results)
   for _, l in ipairs(L) do

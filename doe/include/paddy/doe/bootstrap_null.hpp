@@ -9,10 +9,10 @@
 // simulations:
 //
 //   Sigma_seed^  = the shrunk seed covariance of the replicates (taken as the truth),
-//   Sigma^       = diag(sigma^2) + Sigma_seed^ / n_avg,
+//   Sigma^       = diag(sigma^2) + C + Sigma_seed^ / n_avg   (C: errors the measurements share),
 //   per trial t: e_t ~ N(0, Sigma^)                  (a residual with nothing missing),
 //                X_t = n rows ~ N(0, Sigma_seed^)     (replicates, as the workflow draws them),
-//                Sigma_t = noiseCovariance(X_t, sigma, n_avg),
+//                Sigma_t = noiseCovariance(X_t, sigma, n_avg, C),
 //                diagnose(e_t, Sigma_t, J, candidates) -> z_max, Q0, Q0 - z_k^2,
 //   thresholds   = nullThresholds(z_max, Q0, alpha, Q0 - z_k^2).
 //
@@ -35,6 +35,7 @@ struct BootstrapNullInput {
   Eigen::MatrixXd jacobian;          ///< m x p, raw units (as diagnose)
   std::vector<Candidate> candidates;
   Eigen::VectorXd sigma;             ///< m measurement standard deviations (empty: all 0)
+  Eigen::MatrixXd sharedMeasurement; ///< C of noiseCovariance: m x m, or empty (none)
   Eigen::MatrixXd seedCovariance;    ///< m x m, Sigma_seed of one replicate (NoiseCovariance::seedCovariance)
   int replicates = 0;                ///< n replicate seeds the workflow used to estimate it (>= 2)
   double nAvg = 1.0;                 ///< effective seeds behind a residual (> 0; see noiseCovariance)

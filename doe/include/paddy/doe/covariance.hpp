@@ -2,7 +2,11 @@
 //
 //   Sigma = Sigma_meas + Sigma_seed / n_avg
 //
-// Sigma_meas = diag(sigma_i^2) from the measurement uncertainties; Sigma_seed from n >= 2 replicate
+// Sigma_meas = diag(sigma_i^2) + C from the measurement uncertainties: sigma_i is each entry's own
+// (independent) error, C an optional m x m covariance of errors the entries share — e.g. one
+// specimen read at several speeds, every torque multiplied by the same 1 + eps, eps ~ N(0, c^2):
+// C_ij = c^2 y_i y_j (in the standardised units of the workflow, y_i = value_i / sigma_i).
+// Sigma_seed from n >= 2 replicate
 // simulations at the calibrated parameters (rows = replicates, columns = observables), shrunk
 // toward its diagonal with the Schäfer–Strimmer estimator ("target D": variances kept, the
 // correlations r_ij shrunk toward 0):
@@ -25,7 +29,7 @@
 namespace paddy::doe {
 
 struct NoiseCovariance {
-  Eigen::MatrixXd covariance;      ///< Sigma = Sigma_meas + Sigma_seed / n_avg
+  Eigen::MatrixXd covariance;      ///< Sigma = diag(sigma^2) + C + Sigma_seed / n_avg
   Eigen::MatrixXd seedCovariance;  ///< shrunk Sigma_seed of one replicate
   Eigen::VectorXd seedSd;          ///< sample standard deviation of each observable over replicates
   double shrinkage = 0.0;          ///< lambda*, 0 = sample correlations kept, 1 = diagonal
@@ -33,10 +37,16 @@ struct NoiseCovariance {
 
 /// replicates: n x m (n >= 2, finite); sigma: m measurement standard deviations (>= 0, may be
 /// empty = all 0); nAvg > 0 (the effective number of seeds: below 1 when the measurement
-/// carries seed-like scatter of its own, 1/n_avg = 1/replicates + 1/measured_repeats). Throws DoeError naming the field when an input is invalid or when an
-/// observable has neither seed scatter nor measurement sigma (Sigma would be singular).
+/// carries seed-like scatter of its own, 1/n_avg = 1/replicates + 1/measured_repeats);
+/// sharedMeasurement: C, m x m symmetric positive semi-definite, or empty (none). Throws DoeError
+/// naming the field when an input is invalid or when an observable has neither seed scatter nor
+/// measurement error (Sigma would be singular).
 NoiseCovariance noiseCovariance(const Eigen::MatrixXd& replicates, const Eigen::VectorXd& sigma,
-                                double nAvg = 1.0);
+                                double nAvg = 1.0, const Eigen::MatrixXd& sharedMeasurement = Eigen::MatrixXd());
+
+/// Checks C of noiseCovariance (square m x m, finite, symmetric, no eigenvalue below -1e-10 of
+/// its scale); an empty matrix passes. Throws DoeError("<what>: ...").
+void checkSharedMeasurement(const Eigen::MatrixXd& C, Eigen::Index m, const char* what = "measurement_covariance");
 
 /// Schäfer–Strimmer shrinkage of the sample correlation toward I (formulas above); returns lambda*.
 double correlationShrinkage(const Eigen::MatrixXd& replicates);

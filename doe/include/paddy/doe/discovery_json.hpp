@@ -1,7 +1,7 @@
 // JSON documents of the discovery statistics, shared by the Lua binding (paddy.doe.*) and the
 // command line (`paddy doe diagnose`). Field names and layout: docs/doe.md, "Naming a missing
 // effect". Every function validates its document and throws DoeError naming the field.
-//   noiseCovarianceJson {replicates = n x m, sigma = m, n_avg}  -> {covariance, shrinkage, seed_sd, ...}
+//   noiseCovarianceJson {replicates = n x m, sigma = m, n_avg, measurement_covariance = m x m}  -> {covariance, shrinkage, seed_sd, ...}
 //   diagnoseJson        {residual, covariance | sigma, jacobian, candidates, labels, blocks, alpha, ...}
 //   gaussNewtonJson     {theta, residual, jacobian, covariance | sigma, lower, upper, damping}
 //   compareFitsJson     {q_before, q_after, df, n, k_before, k_after}
@@ -9,7 +9,7 @@
 //                       -> {x, predicted, jacobian, covariance, se, residual_sd, misfit_predicted, terms, coefficients, at_bound}
 //                       (response_surface.hpp)
 //   nullThresholdsJson  {z_max = {...}, q0 = {...}, q_after = {...}, alpha}
-//   bootstrapThresholdsJson {seed_covariance, replicates, n_avg, sigma, jacobian, candidates, alpha, trials, seed}
+//   bootstrapThresholdsJson {seed_covariance, replicates, n_avg, sigma, measurement_covariance, jacobian, candidates, alpha, trials, seed}
 //                       -> the same fields as nullThresholdsJson (bootstrap_null.hpp)
 #pragma once
 #include "paddy/doe/discovery.hpp"
