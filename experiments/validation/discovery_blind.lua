@@ -33,6 +33,7 @@ local P = paddy.parameters{
   {name = "vane_scale", default = 0, min = 0, max = 8,
    description = "add the vane rheometer scaled by this factor from the standard 100 mm cup (lib/discovery/benchmark.lua: start-up peak and two steady torques; 0 = none, else 1-8): a flowing strength beside the slump's static one"},
   {name = "vane_speeds", default = "", description = "steady speeds of the vane, comma-separated rpm ('' = 10,40); with vane_scale > 0"},
+  {name = "vane_startup_rpm", default = 5, min = 0.1, max = 20, description = "speed of the vane's start-up test (its peak torque), rpm"},
   {name = "vane_shared_sd", default = 0, min = 0, max = 0.5,
    description = "the vane's torques read as one specimen: a relative error of this sd that the sweep's torques and its start-up peak share (the input's shared_error), each torque with its own vane_reading_sd beside it; 0 = every torque its own 5 % error"},
   {name = "vane_reading_sd", default = 0.015, min = 0.001, max = 0.5, description = "each vane torque's own relative reading error when vane_shared_sd > 0"},
@@ -82,7 +83,7 @@ if P.signature_seeds > 0 then settings.signature_seeds = P.signature_seeds end
 -- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
 -- every cone size, and the vane when vane_scale > 0.
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,
-                                      cone_scales = P.cone_scales, vane_scale = P.vane_scale, vane_speeds = P.vane_speeds,
+                                      cone_scales = P.cone_scales, vane_scale = P.vane_scale, vane_speeds = P.vane_speeds, vane_startup_rpm = P.vane_startup_rpm,
                                       vane_shared_sd = P.vane_shared_sd, vane_reading_sd = P.vane_reading_sd}
 
 -- Trials in a fixed order, their truths drawn from their seeds.

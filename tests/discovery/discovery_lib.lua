@@ -219,12 +219,12 @@ t = good(); t.experiments[1].shared_error = {rel = 0.05, keys = {"slump_mm"}}; b
 
 -- The benchmark's vane read as one specimen: its torques share the fill's error.
 local bench = require("lib.discovery.benchmark")
-local ve = bench.experiments{variant = "small", vane_scale = 4, vane_speeds = "10,40,160", vane_shared_sd = 0.05}
+local ve = bench.experiments{variant = "small", vane_scale = 4, vane_speeds = "10,40,160", vane_shared_sd = 0.05, vane_startup_rpm = 10}
 local vane = ve[#ve]
-check(vane.set.speeds_rpm == "10,40,160" and vane.shared_error.rel_sd == 0.05 and vane.observables[1].rel == bench.VANE_READING_SD,
+check(vane.set.startup_rpm == 10 and vane.set.speeds_rpm == "10,40,160" and vane.shared_error.rel_sd == 0.05 and vane.observables[1].rel == bench.VANE_READING_SD,
       "benchmark vane: speeds, shared error and reading error")
 local plain = bench.experiments{variant = "small", vane_scale = 4}
-check(plain[#plain].shared_error == nil and plain[#plain].observables[1].rel == 0.05 and plain[#plain].set.speeds_rpm == "10,40",
+check(plain[#plain].shared_error == nil and plain[#plain].observables[1].rel == 0.05 and plain[#plain].set.speeds_rpm == "10,40" and plain[#plain].set.startup_rpm == 5,
       "benchmark vane by default: two speeds, 5 % each")
 local okv, ev = pcall(bench.experiments, {variant = "small", vane_scale = 4, vane_speeds = "10,400"})
 check(not okv and ev:match("vane_speeds = 10,400: each speed must be in %(0, 300%] rpm"), "vane speed range: %s", tostring(ev))

@@ -65,17 +65,18 @@ M.SLUMP_COMMON = {settle_max_time = 1.5, min_rest_time = 0.2, max_time = 4}
 -- field vane is this size). Two speeds (the steady torque at each) after a start-up test (its peak
 -- torque): a static strength and a flowing one.
 M.VANE_SPEEDS_RPM = "10,40"
-function M.vane_set(scale, speeds)
+function M.vane_set(scale, speeds, startup_rpm)
   return {cup_diameter = 0.1 * scale, cup_height = 0.12 * scale, fill_level = 0.12 * scale, vane_diameter = 0.05 * scale,
           vane_height = 0.06 * scale, vane_bottom = 0.03 * scale, speeds_rpm = speeds or M.VANE_SPEEDS_RPM, down_sweep = false,
-          startup_rpm = 5, startup_angle = 60, max_step_time = 3, settle_max_time = 1.5}
+          startup_rpm = startup_rpm or 5, startup_angle = 60, max_step_time = 3, settle_max_time = 1.5}
 end
 
 -- The experiments of a variant: `full` (slump lifted at 0.1 and 0.4 m/s) or `small` (one slump at
 -- 0.3 m/s); o.lift_speeds ('' = the variant's) replaces the slump experiments by one per speed;
 -- o.cone_scales ('' = the standard cone) runs each in cones of the given sizes (a scale other than
 -- 1 appends _cone<percent> to the name and scales the cone's three dimensions); o.vane_scale > 0
--- adds the vane rheometer at that scale, at o.vane_speeds (rpm, comma-separated; '' = 10,40), its
+-- adds the vane rheometer at that scale, its start-up test at o.vane_startup_rpm (default 5; 60 degrees
+-- at 5 rpm take 2 s of simulated time, at 10 rpm 1 s), at o.vane_speeds (rpm, comma-separated; '' = 10,40), its
 -- torques each with 5 % error (o.vane_shared_sd = 0) or sharing a fill's error of vane_shared_sd
 -- with their own reading error o.vane_reading_sd (default VANE_READING_SD) beside it.
 function M.experiments(o)
@@ -127,7 +128,9 @@ function M.experiments(o)
         if v <= 0 or v > 300 then error(string.format("discovery benchmark: vane_speeds = %s: each speed must be in (0, 300] rpm", speeds), 0) end
       end
     end
-    local e = {name = string.format("vane_x%g", vs):gsub("%.", "_"), script = "rheometer.lua", set = M.vane_set(vs, speeds),
+    local su = o.vane_startup_rpm or 5
+    if su <= 0 or su > 20 then error(string.format("discovery benchmark: vane_startup_rpm = %g: must be in (0, 20] rpm", su), 0) end
+    local e = {name = string.format("vane_x%g", vs):gsub("%.", "_"), script = "rheometer.lua", set = M.vane_set(vs, speeds, su),
                observables = M.VANE_OBSERVABLES}
     local shared = o.vane_shared_sd or 0
     if shared > 0 then
