@@ -41,6 +41,8 @@ local P = paddy.parameters{
   {name = "quick", default = false, description = "demonstration variant: coarser particles, fewer replicates and seeds (about 10 minutes on 2 cores)"},
   {name = "particle_diameter", default = 0.010, unit = "m", min = 0.001, max = 0.04, description = "slump-test sphere diameter (quick: 0.018 unless set)"},
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "time step / Rayleigh time at the reference damping; one step for all runs, shortened for the lowest restitution any run may use"},
+  {name = "unstable_step_halvings", default = 1, type = "integer", min = 0, max = 3,
+   description = "a run that stops because the step is too large for the velocities it reached is run again at half the step, at most this often (0: it fails the calibration); the report lists such runs"},
   {name = "experiment_params", default = "", description = "further experiment parameters for every run, 'name=value,name=value'"},
   {name = "rheometer_particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.02, description = "sphere diameter of the verification rheometer (quick: 0.012 unless set)"},
   {name = "rheometer_params", default = "", description = "further rheometer parameters, 'name=value,...' (e.g. speeds_rpm=5;10;20)"},
@@ -110,7 +112,8 @@ local campaign = paddy.campaign{
                                         poll_interval = P.slurm_poll_interval} or nil,
 }
 local parallel = P.max_parallel > 0 and P.max_parallel or math.max(1, paddy.threads // P.threads_per_job)
-local runner = jobs.new{campaign = campaign, script = input.experiment, fixed = fixed, responses = resp}
+local runner = jobs.new{campaign = campaign, script = input.experiment, fixed = fixed, responses = resp,
+                        step_halvings = P.unstable_step_halvings}
 local function say(fmt, ...) io.stderr:write("calibration: ", string.format(fmt, ...), "\n") end
 local function params_of(values)            -- {symbol = value} → {parameter = value}
   local p = {}
@@ -338,6 +341,15 @@ end
 -----------------------------------------------------------------------------------------------
 -- 6. Report.
 outcome.simulations = runner.log
+-- Runs that needed a shorter step than the calibration's (jobs.lua): named in the report.
+outcome.runs_at_shorter_step = {}
+for _, r in ipairs(runner.log) do
+  if r.step_halvings then
+    outcome.runs_at_shorter_step[#outcome.runs_at_shorter_step + 1] = {stage = r.stage, label = r.label, timestep_fraction = r.timestep_fraction,
+                                                                        step_halvings = r.step_halvings}
+    say("note: %s %s ran at timestep_fraction %.4g (%d halving(s)): unstable at the calibration's step", r.stage, r.label or "", r.timestep_fraction, r.step_halvings)
+  end
+end
 outcome.wall_time_s = os.difftime(os.time(), wall_start)
 local files = report.write{outcome = outcome, figures = figures, pictures = P.pictures}
 say("report: %s", files.html)

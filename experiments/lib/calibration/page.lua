@@ -26,6 +26,10 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}.eq{font-family:monospace;
   add(string.format('<p>Input file <code>%s</code>; experiment <code>%s</code>; particle diameter %s m; time step %s × the Rayleigh time for every run (damping factor %s at the lowest restitution %s); strategy %s; %d distinct simulations; wall time %s s. Paddy %s.</p>',
                     esc(input.path), esc(input.experiment), num(o.particle_diameter), num(o.time_step.fraction), num(o.time_step.factor, 3),
                     num(o.time_step.lowest_restitution), esc(o.parameters.strategy), #o.simulations, num(o.wall_time_s), esc(paddy.version)))
+  for _, r in ipairs(o.runs_at_shorter_step or {}) do
+    add(string.format('<p class="bad">%s %s stopped at the calibration\'s step (too large for the velocities it reached) and ran at %s × the Rayleigh time (%d halving(s)).</p>',
+                      esc(r.stage), esc(r.label or ""), num(r.timestep_fraction), r.step_halvings))
+  end
 
   -- Summary.
   add('<h2>Summary</h2>')

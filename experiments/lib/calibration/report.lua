@@ -52,7 +52,8 @@ end
 function M.summary(o, files)
   local s = {measured = o.measured, tolerance = o.tolerance, time_step = o.time_step, simulations = #o.simulations, wall_time_s = o.wall_time_s,
              selected_factors = o.screening.selected, to_tolerance = compare.to_tolerance(o),
-             report = files.html, calibration_json = files.json, csv = files.csv}
+             report = files.html, calibration_json = files.json, csv = files.csv,
+             runs_at_shorter_step = o.runs_at_shorter_step}
   if o.reference then
     local r = o.reference
     local params = {}
