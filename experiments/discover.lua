@@ -26,6 +26,7 @@ local mud = require("lib.mud")
 local jobs = require("lib.calibration.jobs")
 local input_file = require("lib.discovery.input")
 local stack = require("lib.discovery.stack")
+local zoom = require("lib.discovery.zoom")
 local report = require("lib.discovery.report")
 
 local P = paddy.parameters{
@@ -528,7 +529,9 @@ if named then
                    {theta = theta, beta = beta, lambda = lam})
   local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = best.history, scan = best.scan,
                  surface = best.surface, method = best.surface and "surface" or "gauss_newton"}
-  local last = best.step or {}
+  -- The joint point assessed at the confirmation seeds: the misfit left, the seed scatter after,
+  -- the resolution shift there and the diagnosis of what is left.
+  local function assess(joint, last)
   local conf_points = {}
   for k = 1, S.confirm_seeds do
     conf_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 200 + k, label = "confirmation " .. k}
@@ -576,7 +579,7 @@ if named then
                                                 z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
                                                 q_after_threshold = thr_after.q_after_threshold} or nil
   local se = last.se and last.se[p + 1] or 0
-  after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
+  local after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
                                             high = math.min(c.high, joint.lambda + 1.96 * se), se = se},
            joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
            rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results, resolution = resolution_after}
@@ -590,6 +593,57 @@ if named then
   local z = {}
   for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
   after.z = z
+  return after
+  end
+  after = assess(joint, best.step or {})
+  -- Zoom: when the misfit left at the confirmation seeds is significant, a second response surface
+  -- in a box of +-refit_zoom of each range around the refit point (a central composite design:
+  -- centre, 2 axial points per dimension, every corner; clipped to the ranges), and its optimum
+  -- assessed at the same confirmation seeds; the point that leaves the smaller misfit is kept, and
+  -- zoomed around again while the misfit it leaves is significant (at most refit_zoom_rounds). A
+  -- strong effect's response is far from quadratic over the whole valley the first surface spans
+  -- (wall adhesion near the top of its range lifts mud with the cone), a quadratic in a small box
+  -- around the optimum fits it.
+  local zooms = {}
+  for round = 1, S.refit_zoom > 0 and S.refit_zoom_rounds or 0 do
+    if not (after.diagnosis and after.diagnosis.q0_significant) then break end
+    local h = S.refit_zoom
+    local x0, lower, upper = {}, {}, {}
+    for j, d in ipairs(dims) do x0[j], lower[j], upper[j] = j <= p and joint.theta[j] or joint.lambda, d.lo, d.hi end
+    local X, zlo, zhi = zoom.design(x0, lower, upper, h)
+    local base = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0}
+    local function at(x)
+      local pt = copy_point(base)
+      for j, d in ipairs(dims) do pt = d.set(pt, x[j]) end
+      return pt
+    end
+    local zpts = {}
+    for k, x in ipairs(X) do zpts[k] = at(x); zpts[k].label = string.format("recalibration zoom %d.%d", round, k - 1) end
+    say("   misfit left significant: zoom %d, %d point(s) within +-%.3g of each range around the refit point", round, #zpts, h)
+    local zfs = evaluate("recalibration zoom", zpts)
+    local ok, rs = pcall(doe.response_surface, {points = X, values = zfs, measured = y, covariance = cov, lower = zlo, upper = zhi})
+    if ok then
+      local pt = at(rs.x)
+      local zjoint = {theta = pt.theta, lambda = pt.lambda[named], iterations = joint.iterations, scan = joint.scan, surface = joint.surface,
+                      method = "surface, zoomed",
+                      zoom = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
+                              at_bound = rs.at_bound, points = #X, half_width = h, round = round,
+                              from = {theta = joint.theta, lambda = joint.lambda}}}
+      say("   zoomed surface: best %s, predicted RMS residual %.3g", fmt_point(pt), rs.misfit_predicted)
+      local zafter = assess(zjoint, {se = rs.se})
+      zjoint.zoom.kept = zafter.rms < after.rms
+      say("   zoomed point: RMS standardised residual %.3g against %.3g at the point it zoomed from: %s", zafter.rms, after.rms,
+          zjoint.zoom.kept and "kept" or "not kept")
+      zooms[#zooms + 1] = zjoint.zoom
+      zjoint.zooms = zooms
+      if not zjoint.zoom.kept then after.joint.zooms = zooms; break end
+      after, joint = zafter, zjoint
+    else
+      say("   no zoomed surface (%s): the point stays", tostring(rs))
+      break
+    end
+  end
+  local diag_after = after.diagnosis or nil
   -- The refit must confirm the effect: a strength below the candidate's smallest relevant one (or
   -- 0 when none is given) means the joint fit did not need it, and so does a misfit at the new
   -- seeds that is not significantly smaller than before (likelihood ratio on 1 df at alpha); the

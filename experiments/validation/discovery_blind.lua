@@ -45,6 +45,8 @@ local P = paddy.parameters{
    description = "seeds each candidate's signature is averaged over (settings.signature_seeds; 0 = the variant's: full 2, tiny and small 3)"},
   {name = "probe_fraction", default = 0.5, min = 0.05, max = 1,
    description = "each candidate's probe strength as a fraction of its range (its input key 'probe'): a signature's seed noise does not grow with the probe, its signal does"},
+  {name = "refit_zoom", default = 0.15, min = 0, max = 0.5,
+   description = "the workflow's settings.refit_zoom: a second response surface around the refit point when the misfit it leaves is significant (0 = none, as the runs measured before it)"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
@@ -80,6 +82,7 @@ if P.tiny or P.small then
               resolution_factor = 0.9, resolution_seeds = 2}
 end
 if P.signature_seeds > 0 then settings.signature_seeds = P.signature_seeds end
+settings.refit_zoom = P.refit_zoom
 -- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
 -- every cone size, and the vane when vane_scale > 0.
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,

@@ -189,6 +189,8 @@ t = good(); t.settings = {signature_baseline = "replicates", signature_seeds = 6
 bad(t, "settings%.signature_seeds = 6 with signature_baseline = 'replicates' needs as many replicates")
 t = good(); t.settings = {measured_repeats = -1}; bad(t, "settings%.measured_repeats = %-1 is outside the allowed range")
 t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 2 is outside the allowed range %[3,")
+check(g.settings.refit_zoom == 0.15 and g.settings.refit_zoom_rounds == 3, "zoom on by default")
+t = good(); t.settings = {refit_zoom = 0.01}; bad(t, "settings%.refit_zoom = 0%.01: allowed 0 %(off%) or 0%.02 to 0%.5")
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
       and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4 and g.settings.refit == "surface"
       and g.settings.calibration_start == "surface" and g.settings.signature_baseline == "own", "defaults of the start scan, the calibration's start, the refit, step control, specimen scatter, resolution and strong margin")
@@ -216,6 +218,20 @@ t = good(); t.experiments[1].shared_error = {rel_sd = 0.05, keys = {"torque_Nm"}
 bad(t, "experiments%[1%]%.shared_error%.keys%[1%] = torque_Nm is not a measured key of this experiment")
 t = good(); t.experiments[1].shared_error = {rel_sd = 0.05, keys = {}}; bad(t, "shared_error%.keys must be a non%-empty list")
 t = good(); t.experiments[1].shared_error = {rel = 0.05, keys = {"slump_mm"}}; bad(t, "shared_error: unknown key 'rel' %(allowed: rel_sd, keys%)")
+
+-- The refit's zoom design: centre, axial points, corners; clipped to the ranges.
+local zoom = require("lib.discovery.zoom")
+local X, zlo, zhi = zoom.design({0.2, 0.095}, {0, 0}, {0.3, 0.1}, 0.15)
+check(#X == 9 and X[1][1] == 0.2 and X[1][2] == 0.095, "1 + 2d + 2^d points, the centre first")
+check(near(zlo[1], 0.155, 1e-15) and near(zhi[1], 0.245, 1e-15) and near(zlo[2], 0.08, 1e-15) and zhi[2] == 0.1, "box clipped to the range")
+check(X[2][1] == zlo[1] and X[2][2] == 0.095 and X[5][2] == zhi[2] and X[5][1] == 0.2, "axial points on the faces")
+local corners = {}
+for k = 6, 9 do corners[string.format("%g,%g", X[k][1], X[k][2])] = true end
+check(corners["0.155,0.08"] and corners["0.245,0.08"] and corners["0.155,0.1"] and corners["0.245,0.1"], "every corner once")
+check(#zoom.design({1, 2, 3}, {0, 0, 0}, {4, 4, 4}, 0.1) == 1 + 6 + 8, "three dimensions: 15 points")
+local okz, ez = pcall(zoom.design, {0.5}, {0}, {0.3}, 0.15)
+check(not okz and ez:match("centre 0.5 lies outside"), "a centre outside its range is refused: %s", tostring(ez))
+check(not pcall(zoom.design, {0.1}, {0}, {0.3}, 0), "a zero half-width is refused")
 
 -- The benchmark's vane read as one specimen: its torques share the fill's error.
 local bench = require("lib.discovery.benchmark")

@@ -150,7 +150,7 @@ function M.read(path)
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
-                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit",
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit", "refit_zoom", "refit_zoom_rounds",
                    "calibration_start", "signature_baseline"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
@@ -195,6 +195,14 @@ function M.read(path)
   S.start_scan = number(path, "settings.start_scan", s.start_scan or 4, 0, 100)
   -- The recalibration with an effect: a response surface through its start scan (default) or
   -- Gauss-Newton steps from the scan's best point (docs/discovery.md, step 4).
+  -- ... and, when the misfit left at the confirmation seeds is significant, a second surface in a
+  -- box of +-refit_zoom of each range around the refit point (0: none), again around each better
+  -- point while the misfit stays significant, at most refit_zoom_rounds times.
+  S.refit_zoom = number(path, "settings.refit_zoom", s.refit_zoom or 0.15, 0, 0.5)
+  if S.refit_zoom > 0 and S.refit_zoom < 0.02 then
+    fail(path, string.format("settings.refit_zoom = %g: allowed 0 (off) or 0.02 to 0.5", S.refit_zoom))
+  end
+  S.refit_zoom_rounds = number(path, "settings.refit_zoom_rounds", s.refit_zoom_rounds or 3, 1, 10)
   S.refit = s.refit or "surface"
   if S.refit ~= "surface" and S.refit ~= "gauss_newton" then
     fail(path, string.format("settings.refit = '%s': allowed surface, gauss_newton", tostring(S.refit)))

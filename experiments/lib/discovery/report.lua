@@ -77,8 +77,8 @@ function M.summary(o, files)
     confusability = d.confusability,
     calibrated = theta,
     recalibrated = theta_after,
-    recalibration = a and {method = a.joint.method, surface = a.joint.surface} or
-                    (o.tried and {method = o.tried.joint.method, surface = o.tried.joint.surface}) or nil,
+    recalibration = a and {method = a.joint.method, surface = a.joint.surface, zooms = a.joint.zooms} or
+                    (o.tried and {method = o.tried.joint.method, surface = o.tried.joint.surface, zooms = o.tried.joint.zooms}) or nil,
     residuals = residuals,
     noise = {shrinkage = o.located.noise.shrinkage, seed_sd = o.located.noise.seed_sd,
              measured_repeats = o.input.settings.measured_repeats},

@@ -1,0 +1,40 @@
+-- The design of the refit's zoom (experiments/discover.lua, step 4; docs/discovery.md): a
+-- central composite design in a box of +-h of each range around a point, clipped to the ranges:
+-- the centre, two axial points per dimension (on the box's faces) and every corner, 1 + 2d + 2^d
+-- points — enough for the quadratic response surface (1 + d + d(d+1)/2 coefficients) that the
+-- zoom fits (G. E. P. Box and K. B. Wilson, "On the experimental attainment of optimum
+-- conditions", J. R. Stat. Soc. B 13, 1951; face-centred variant).
+--
+--   local zoom = require("lib.discovery.zoom")
+--   local X, lo, hi = zoom.design({0.2, 0.05}, {0, 0}, {0.3, 0.1}, 0.15)
+local M = {}
+
+-- x0: the centre; lower, upper: the ranges; h: the half-width as a fraction of each range.
+-- Returns the points (list of coordinate lists) and the zoom box (lo, hi).
+function M.design(x0, lower, upper, h)
+  local d = #x0
+  if not (h > 0 and h <= 0.5) then error(string.format("zoom: half-width %g must be in (0, 0.5]", h), 0) end
+  local lo, hi = {}, {}
+  for j = 1, d do
+    if not (upper[j] > lower[j]) then error(string.format("zoom: range %d is empty [%g, %g]", j, lower[j], upper[j]), 0) end
+    if x0[j] < lower[j] or x0[j] > upper[j] then error(string.format("zoom: centre %g lies outside [%g, %g]", x0[j], lower[j], upper[j]), 0) end
+    local w = h * (upper[j] - lower[j])
+    lo[j], hi[j] = math.max(lower[j], x0[j] - w), math.min(upper[j], x0[j] + w)
+  end
+  local X = {{table.unpack(x0)}}
+  for j = 1, d do
+    for _, side in ipairs({lo, hi}) do
+      local x = {table.unpack(x0)}
+      x[j] = side[j]
+      X[#X + 1] = x
+    end
+  end
+  for corner = 0, (1 << d) - 1 do
+    local x = {}
+    for j = 1, d do x[j] = (corner >> (j - 1)) & 1 == 1 and hi[j] or lo[j] end
+    X[#X + 1] = x
+  end
+  return X, lo, hi
+end
+
+return M
