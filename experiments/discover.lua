@@ -46,7 +46,7 @@ local wall_start = os.time()
 -- The experiment scripts live beside this one (experiments/), wherever the workflow is started from.
 local here = (debug.getinfo(1, "S").source:match("^@(.*)/[^/]*$")) or "."
 local input = input_file.read(P.input)
-for _, f in ipairs({"gauss_newton", "noise_covariance", "diagnose", "compare_fits", "bootstrap_thresholds"}) do
+for _, f in ipairs({"gauss_newton", "noise_covariance", "diagnose", "compare_fits", "compare_non_nested", "bootstrap_thresholds"}) do
   if type(doe[f]) ~= "function" then
     error("discover.lua: this build has no paddy.doe." .. f .. " (the statistics of docs/discovery.md)", 0)
   end
@@ -508,8 +508,11 @@ local screening = {decision = diag.decision, reason = diag.reason}
 local no_rival = diag.ambiguous_with == nil or #diag.ambiguous_with == 0
 local tentative = diag.decision == "unknown" and diag.best ~= nil and no_rival
 local named = diag.decision == "effect" and diag.named or (tentative and diag.best) or nil
-local after
-if named then
+-- Adds the candidate `named` to the model and recalibrates it with the free parameters (valley
+-- scan, response surface, zoom), assessed at the confirmation seeds. Returns the assessed point
+-- (misfit, seed scatter after, diagnosis of what is left, comparison with the misfit before), the
+-- joint fit and the candidate.
+local function refit_effect(named, tentative)
   local c
   for _, x in ipairs(cands) do if x.name == named then c = x end end
   local est
@@ -532,70 +535,70 @@ if named then
   -- The joint point assessed at the confirmation seeds: the misfit left, the seed scatter after,
   -- the resolution shift there and the diagnosis of what is left.
   local function assess(joint, last)
-  local conf_points = {}
-  for k = 1, S.confirm_seeds do
-    conf_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 200 + k, label = "confirmation " .. k}
-  end
-  local conf, conf_results = evaluate("confirmation", conf_points)
-  local f_after = stack.mean(conf)
-  local r1 = stack.minus(y, f_after)
-  -- The seed scatter after: the replicates' and the confirmation runs' deviations from their own
-  -- means, pooled (a strong effect can scatter the pile more than the calibrated model did: mud
-  -- that sticks to the lifted cone lets go at a random moment). Scaled by sqrt((N-1)/(N-2)), the
-  -- pooled deviations' sample covariance is the pooled within-group estimator on N - 2 degrees of
-  -- freedom; the bootstrap thresholds draw the same number of effective replicates.
-  local pooled = {}
-  do
-    local N = #reps + #conf
-    local scale = math.sqrt((N - 1) / (N - 2))
-    for _, group in ipairs({reps, conf}) do
-      local mean = stack.mean(group)
-      for _, x in ipairs(group) do
-        local d = {}
-        for i = 1, m do d[i] = scale * (x[i] - mean[i]) end
-        pooled[#pooled + 1] = d
+    local conf_points = {}
+    for k = 1, S.confirm_seeds do
+      conf_points[k] = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0 + 200 + k, label = "confirmation " .. k}
+    end
+    local conf, conf_results = evaluate("confirmation", conf_points)
+    local f_after = stack.mean(conf)
+    local r1 = stack.minus(y, f_after)
+    -- The seed scatter after: the replicates' and the confirmation runs' deviations from their own
+    -- means, pooled (a strong effect can scatter the pile more than the calibrated model did: mud
+    -- that sticks to the lifted cone lets go at a random moment). Scaled by sqrt((N-1)/(N-2)), the
+    -- pooled deviations' sample covariance is the pooled within-group estimator on N - 2 degrees of
+    -- freedom; the bootstrap thresholds draw the same number of effective replicates.
+    local pooled = {}
+    do
+      local N = #reps + #conf
+      local scale = math.sqrt((N - 1) / (N - 2))
+      for _, group in ipairs({reps, conf}) do
+        local mean = stack.mean(group)
+        for _, x in ipairs(group) do
+          local d = {}
+          for i = 1, m do d[i] = scale * (x[i] - mean[i]) end
+          pooled[#pooled + 1] = d
+        end
       end
     end
+    local noise_after = doe.noise_covariance{replicates = #conf >= 2 and pooled or reps, sigma = ones, n_avg = n_eff(S.confirm_seeds),
+                                             measurement_covariance = shared}
+    -- The resolution shift at the refit point: the same runs as step 2's, with the effect added
+    -- (the shift a finer model makes depends on the model: wall adhesion acts through the spheres
+    -- that touch the cone, whose number per area the sphere size sets). It replaces step 2's
+    -- nuisance column in the diagnosis after.
+    local J_after, resolution_after = J_diag, nil
+    if S.resolution_factor > 0 then
+      local b
+      b, J_after = resolution_shift("resolution after", joint.theta, {[named] = joint.lambda}, f_after)
+      resolution_after = {diameter = d_fine, seeds = S.resolution_seeds, rms = stack.rms_standardised(b, noise_after.covariance)}
+      say("   resolution shift at the refit point: RMS %.3g noise sd", resolution_after.rms)
+    end
+    local rest = {}
+    for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
+    local thr_after = #rest > 0 and thresholds(n_eff(S.confirm_seeds), rest, noise_after.seed_covariance,
+                                               #conf >= 2 and #pooled - 1 or S.replicates, J_after) or {}
+    local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J_after, candidates = rest,
+                                                  labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
+                                                  z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
+                                                  q_after_threshold = thr_after.q_after_threshold} or nil
+    local se = last.se and last.se[p + 1] or 0
+    local after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
+                                              high = math.min(c.high, joint.lambda + 1.96 * se), se = se},
+             joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
+             rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results, resolution = resolution_after}
+    if diag_after then
+      -- diagnose's misfit is an RMS, sqrt(Q / m); the likelihood ratio compares the Q themselves.
+      after.comparison = doe.compare_fits{q_before = diag.misfit ^ 2 * m, q_after = diag_after.misfit ^ 2 * m, df = 1, n = m,
+                                          k_before = p, k_after = p + 1}
+    end
+    say("   %s = %.4g [%.4g, %.4g]; RMS standardised residual %.3g -> %.3g", named, after.strength.value, after.strength.low,
+        after.strength.high, outcome.located.rms, after.rms)
+    local z = {}
+    for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
+    after.z = z
+    return after
   end
-  local noise_after = doe.noise_covariance{replicates = #conf >= 2 and pooled or reps, sigma = ones, n_avg = n_eff(S.confirm_seeds),
-                                           measurement_covariance = shared}
-  -- The resolution shift at the refit point: the same runs as step 2's, with the effect added
-  -- (the shift a finer model makes depends on the model: wall adhesion acts through the spheres
-  -- that touch the cone, whose number per area the sphere size sets). It replaces step 2's
-  -- nuisance column in the diagnosis after.
-  local J_after, resolution_after = J_diag, nil
-  if S.resolution_factor > 0 then
-    local b
-    b, J_after = resolution_shift("resolution after", joint.theta, {[named] = joint.lambda}, f_after)
-    resolution_after = {diameter = d_fine, seeds = S.resolution_seeds, rms = stack.rms_standardised(b, noise_after.covariance)}
-    say("   resolution shift at the refit point: RMS %.3g noise sd", resolution_after.rms)
-  end
-  local rest = {}
-  for _, x in ipairs(dcands) do if x.name ~= named then rest[#rest + 1] = x end end
-  local thr_after = #rest > 0 and thresholds(n_eff(S.confirm_seeds), rest, noise_after.seed_covariance,
-                                             #conf >= 2 and #pooled - 1 or S.replicates, J_after) or {}
-  local diag_after = #rest > 0 and doe.diagnose{residual = r1, covariance = noise_after.covariance, jacobian = J_after, candidates = rest,
-                                                labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
-                                                z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
-                                                q_after_threshold = thr_after.q_after_threshold} or nil
-  local se = last.se and last.se[p + 1] or 0
-  local after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
-                                            high = math.min(c.high, joint.lambda + 1.96 * se), se = se},
-           joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
-           rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results, resolution = resolution_after}
-  if diag_after then
-    -- diagnose's misfit is an RMS, sqrt(Q / m); the likelihood ratio compares the Q themselves.
-    after.comparison = doe.compare_fits{q_before = diag.misfit ^ 2 * m, q_after = diag_after.misfit ^ 2 * m, df = 1, n = m,
-                                        k_before = p, k_after = p + 1}
-  end
-  say("   %s = %.4g [%.4g, %.4g]; RMS standardised residual %.3g -> %.3g", named, after.strength.value, after.strength.low,
-      after.strength.high, outcome.located.rms, after.rms)
-  local z = {}
-  for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
-  after.z = z
-  return after
-  end
-  after = assess(joint, best.step or {})
+  local after = assess(joint, best.step or {})
   -- Zoom: when the misfit left at the confirmation seeds is significant, a second response surface
   -- in a box of +-refit_zoom of each range around the refit point (a central composite design:
   -- centre, 2 axial points per dimension, every corner; clipped to the ranges), and its optimum
@@ -643,6 +646,67 @@ if named then
       break
     end
   end
+  return after, joint, c
+end
+
+-- An ambiguous answer: the two candidates that explain the misfit alike (their linearised
+-- signatures are confusable) are each added and recalibrated, and their refits compared at the
+-- same confirmation seeds with Vuong's test for non-nested models (paddy.doe.compare_non_nested,
+-- doe/include/paddy/doe/non_nested.hpp): a strong effect bends the response in its own way, which
+-- the linear signatures cannot show. One is named when the test prefers it at alpha and its refit
+-- confirms it (strength above its smallest relevant one, misfit significantly lower than before,
+-- nothing significant left); otherwise the answer stays ambiguous and reports both refits.
+local after, resolved
+if diag.decision == "ambiguous" and S.ambiguous_refits and diag.ambiguous_with and #diag.ambiguous_with >= 2 then
+  local pair = {diag.ambiguous_with[1], diag.ambiguous_with[2]}
+  say("4. ambiguous between %s and %s: each added and recalibrated", pair[1], pair[2])
+  local fits = {}
+  for k, name in ipairs(pair) do
+    local a, jt, cc = refit_effect(name, false)
+    fits[k] = {after = a, joint = jt, c = cc}
+  end
+  local C = {}
+  for i = 1, m do
+    C[i] = {}
+    for j = 1, m do C[i][j] = 0.5 * (fits[1].after.covariance[i][j] + fits[2].after.covariance[i][j]) end
+  end
+  local v = doe.compare_non_nested{residual_a = fits[1].after.residual, residual_b = fits[2].after.residual, covariance = C,
+                                   k_a = p + 1, k_b = p + 1, alpha = S.alpha}
+  local function confirmed(f)
+    local weak = f.joint.lambda <= (f.c.relevant or 0)
+    local gain = f.after.comparison == nil or f.after.comparison.p < S.alpha
+    local left = f.after.diagnosis and f.after.diagnosis.q0_significant
+    return not weak and gain and not left
+  end
+  local rec = {candidates = pair, vuong = v}
+  for k, f in ipairs(fits) do
+    rec[k == 1 and "a" or "b"] = {name = pair[k], strength = f.after.strength, misfit_after = f.after.rms, confirmed = confirmed(f),
+                                  q0_after = f.after.diagnosis and f.after.diagnosis.q0 or nil,
+                                  q0_significant = f.after.diagnosis and f.after.diagnosis.q0_significant or false}
+  end
+  local win = v.preferred == "a" and 1 or v.preferred == "b" and 2 or nil
+  say("   Vuong z = %.3g (p = %.3g): %s; misfit after %.3g (%s) and %.3g (%s)", v.z, v.p,
+      win and (pair[win] .. " fits better") or "neither fits better", fits[1].after.rms, pair[1], fits[2].after.rms, pair[2])
+  if win and confirmed(fits[win]) then
+    local f = fits[win]
+    named, after, resolved = pair[win], f.after, true
+    diag.decision, diag.named = "effect", named
+    diag.reason = string.format("%s and %s explained the misfit alike to first order; added and recalibrated each, %s fits "
+                                .. "better (Vuong z = %.3g, p = %.3g) and leaves no significant misfit", pair[1], pair[2], named, v.z, v.p)
+    rec.named = named
+  else
+    diag.reason = diag.reason .. string.format("; added and recalibrated each: %s (Vuong z = %.3g, p = %.3g)",
+                                               win and (pair[win] .. " fits better but its refit does not confirm it")
+                                               or "neither fits significantly better", v.z, v.p)
+  end
+  outcome.ambiguous_refits = rec
+  say("   decision after the refits: %s%s", diag.decision, diag.named and (" - " .. diag.named) or "")
+end
+if resolved then
+  -- named by the refits above
+elseif named then
+  local joint, c
+  after, joint, c = refit_effect(named, tentative)
   local diag_after = after.diagnosis or nil
   -- The refit must confirm the effect: a strength below the candidate's smallest relevant one (or
   -- 0 when none is given) means the joint fit did not need it, and so does a misfit at the new

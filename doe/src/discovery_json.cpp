@@ -1,6 +1,7 @@
 #include "paddy/doe/discovery_json.hpp"
 
 #include "paddy/doe/bootstrap_null.hpp"
+#include "paddy/doe/non_nested.hpp"
 #include "paddy/doe/covariance.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/gauss_newton.hpp"
@@ -336,6 +337,22 @@ json nullThresholdsJson(const json& o) {
   const auto q = list(required(o, "q0"), "q0");
   const auto qa = o.contains("q_after") && !o["q_after"].is_null() ? list(o["q_after"], "q_after") : std::vector<double>{};
   return thresholdsToJson(nullThresholds(z, q, o.contains("alpha") ? number(o["alpha"], "alpha") : 0.05, qa), "null_trials");
+}
+
+json compareNonNestedJson(const json& o) {
+  requireObject(o);
+  const Eigen::VectorXd a = vector(required(o, "residual_a"), "residual_a");
+  const Eigen::VectorXd b = vector(required(o, "residual_b"), "residual_b");
+  const Eigen::MatrixXd cov = matrix(required(o, "covariance"), "covariance");
+  auto integer = [&](const char* key) {
+    if (!o.contains(key) || o[key].is_null()) return 0;
+    const double v = number(o[key], key);
+    if (v != std::floor(v)) throw DoeError(std::string(key) + ": must be an integer");
+    return static_cast<int>(v);
+  };
+  const double alpha = o.contains("alpha") && !o["alpha"].is_null() ? number(o["alpha"], "alpha") : 0.05;
+  const NonNestedComparison c = vuongTest(a, b, cov, integer("k_a"), integer("k_b"), alpha);
+  return {{"lr", c.lr}, {"omega", c.omega}, {"z", c.z}, {"p", c.p}, {"preferred", c.preferred}, {"alpha", alpha}};
 }
 
 json bootstrapThresholdsJson(const json& o) {

@@ -189,7 +189,10 @@ t = good(); t.settings = {signature_baseline = "replicates", signature_seeds = 6
 bad(t, "settings%.signature_seeds = 6 with signature_baseline = 'replicates' needs as many replicates")
 t = good(); t.settings = {measured_repeats = -1}; bad(t, "settings%.measured_repeats = %-1 is outside the allowed range")
 t = good(); t.settings = {strong_margin = 2}; bad(t, "settings%.strong_margin = 2 is outside the allowed range %[3,")
-check(g.settings.refit_zoom == 0.15 and g.settings.refit_zoom_rounds == 3, "zoom on by default")
+check(g.settings.refit_zoom == 0.15 and g.settings.refit_zoom_rounds == 3 and g.settings.ambiguous_refits == true, "zoom and ambiguous refits on by default")
+t = good(); t.settings = {ambiguous_refits = "yes"}; bad(t, "settings%.ambiguous_refits = yes: allowed true, false")
+t = good(); t.settings = {ambiguous_refits = false}
+check(input.read(paddy.write_json(dir .. "/ambiguous_input.json", t)).settings.ambiguous_refits == false, "ambiguous refits can be turned off")
 t = good(); t.settings = {refit_zoom = 0.01}; bad(t, "settings%.refit_zoom = 0%.01: allowed 0 %(off%) or 0%.02 to 0%.5")
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
       and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4 and g.settings.refit == "surface"

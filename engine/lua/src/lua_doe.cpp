@@ -366,6 +366,7 @@ int lDiagnose(lua_State* L) { return wrap<diagnoseJson>(L, "diagnose"); }
 int lGaussNewton(lua_State* L) { return wrap<gaussNewtonJson>(L, "gauss_newton"); }
 int lResponseSurface(lua_State* L) { return wrap<responseSurfaceJson>(L, "response_surface"); }
 int lCompareFits(lua_State* L) { return wrap<compareFitsJson>(L, "compare_fits"); }
+int lCompareNonNested(lua_State* L) { return wrap<compareNonNestedJson>(L, "compare_non_nested"); }
 int lNullThresholds(lua_State* L) { return wrap<nullThresholdsJson>(L, "null_thresholds"); }
 int lBootstrapThresholds(lua_State* L) { return wrap<bootstrapThresholdsJson>(L, "bootstrap_thresholds"); }
 
@@ -383,6 +384,7 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"gauss_newton", paddy::doe::lGaussNewton},
                                  {"response_surface", paddy::doe::lResponseSurface},
                                  {"compare_fits", paddy::doe::lCompareFits},
+                                 {"compare_non_nested", paddy::doe::lCompareNonNested},
                                  {"null_thresholds", paddy::doe::lNullThresholds},
                                  {"bootstrap_thresholds", paddy::doe::lBootstrapThresholds},
                                  {nullptr, nullptr}};

@@ -80,6 +80,7 @@ function M.summary(o, files)
     recalibration = a and {method = a.joint.method, surface = a.joint.surface, zooms = a.joint.zooms} or
                     (o.tried and {method = o.tried.joint.method, surface = o.tried.joint.surface, zooms = o.tried.joint.zooms}) or nil,
     residuals = residuals,
+    ambiguous_refits = o.ambiguous_refits,
     noise = {shrinkage = o.located.noise.shrinkage, seed_sd = o.located.noise.seed_sd,
              measured_repeats = o.input.settings.measured_repeats},
     resolution = o.resolution,

@@ -5,6 +5,7 @@
 //   diagnoseJson        {residual, covariance | sigma, jacobian, candidates, labels, blocks, alpha, ...}
 //   gaussNewtonJson     {theta, residual, jacobian, covariance | sigma, lower, upper, damping}
 //   compareFitsJson     {q_before, q_after, df, n, k_before, k_after}
+//   compareNonNestedJson {residual_a, residual_b, covariance, k_a, k_b, alpha} -> {lr, omega, z, p, preferred} (non_nested.hpp)
 //   responseSurfaceJson {points, values, measured, covariance | sigma, lower, upper}
 //                       -> {x, predicted, jacobian, covariance, se, residual_sd, misfit_predicted, terms, coefficients, at_bound}
 //                       (response_surface.hpp)
@@ -25,6 +26,7 @@ nlohmann::json diagnosisToJson(const Diagnosis& d);
 nlohmann::json diagnoseJson(const nlohmann::json& in);
 nlohmann::json gaussNewtonJson(const nlohmann::json& in);
 nlohmann::json compareFitsJson(const nlohmann::json& in);
+nlohmann::json compareNonNestedJson(const nlohmann::json& in);
 nlohmann::json responseSurfaceJson(const nlohmann::json& in);
 nlohmann::json nullThresholdsJson(const nlohmann::json& in);
 nlohmann::json bootstrapThresholdsJson(const nlohmann::json& in);
