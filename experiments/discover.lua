@@ -649,6 +649,16 @@ local function refit_effect(named, tentative)
   return after, joint, c
 end
 
+-- What a refit says of its effect: `weak` (its strength at or below the candidate's smallest
+-- relevant one, or 0), `no_gain` (the misfit at the new seeds not significantly below the misfit
+-- before: likelihood ratio on 1 df at alpha) and `left` (a significant misfit remains).
+local function refit_checks(after, joint, c)
+  local weak = joint.lambda <= (c.relevant or 0)
+  local no_gain = after.comparison ~= nil and not (after.comparison.p < S.alpha)
+  local left = after.diagnosis and after.diagnosis.q0_significant or false
+  return weak, no_gain, left
+end
+
 -- An ambiguous answer: the two candidates that explain the misfit alike (their linearised
 -- signatures are confusable) are each added and recalibrated, and their refits compared at the
 -- same confirmation seeds with Vuong's test for non-nested models (paddy.doe.compare_non_nested,
@@ -673,10 +683,8 @@ if diag.decision == "ambiguous" and S.ambiguous_refits and diag.ambiguous_with a
   local v = doe.compare_non_nested{residual_a = fits[1].after.residual, residual_b = fits[2].after.residual, covariance = C,
                                    k_a = p + 1, k_b = p + 1, alpha = S.alpha}
   local function confirmed(f)
-    local weak = f.joint.lambda <= (f.c.relevant or 0)
-    local gain = f.after.comparison == nil or f.after.comparison.p < S.alpha
-    local left = f.after.diagnosis and f.after.diagnosis.q0_significant
-    return not weak and gain and not left
+    local weak, no_gain, left = refit_checks(f.after, f.joint, f.c)
+    return not (weak or no_gain or left)
   end
   local rec = {candidates = pair, vuong = v}
   for k, f in ipairs(fits) do
@@ -713,10 +721,8 @@ elseif named then
   -- seeds that is not significantly smaller than before (likelihood ratio on 1 df at alpha); the
   -- screening's misfit was then the calibration's (nothing significant left: `none`) or another
   -- effect's (`unknown`).
-  local weak = joint.lambda <= (c.relevant or 0)
-  local no_gain = after.comparison ~= nil and not (after.comparison.p < S.alpha)
+  local weak, no_gain, left = refit_checks(after, joint, c)
   if weak or no_gain then
-    local left = diag_after and diag_after.q0_significant
     diag.decision = left and "unknown" or "none"
     diag.reason = (weak and string.format("%s was %s, but its refit put its strength at %.4g, not above its smallest relevant strength %.4g; ",
                                           named, tentative and "tried" or "named", joint.lambda, c.relevant or 0)

@@ -1,5 +1,7 @@
 // Helpers shared by the doe tests.
 #pragma once
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -7,6 +9,14 @@
 #include <string>
 
 namespace doe_test {
+
+// n independent standard normal draws.
+inline Eigen::VectorXd gaussian(std::mt19937_64& rng, Eigen::Index n) {
+  std::normal_distribution<double> N;
+  Eigen::VectorXd v(n);
+  for (Eigen::Index i = 0; i < n; ++i) v(i) = N(rng);
+  return v;
+}
 
 inline std::string referenceDir() {
   // PADDY_SOURCE_DIR from the test environment, else the source tree this test was built from.

@@ -4,11 +4,14 @@
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/score_test.hpp"
 
+#include "doe_test_util.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
 using namespace paddy::doe;
+using doe_test::gaussian;
 
 namespace {
 
@@ -17,13 +20,6 @@ Eigen::VectorXd vec(std::initializer_list<double> v) {
   Eigen::Index i = 0;
   for (double d : v) x(i++) = d;
   return x;
-}
-
-Eigen::VectorXd gaussian(std::mt19937_64& rng, Eigen::Index n) {
-  std::normal_distribution<double> N;
-  Eigen::VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v(i) = N(rng);
-  return v;
 }
 
 const CandidateReport& report(const Diagnosis& d, const std::string& name) {

@@ -10,11 +10,14 @@
 #include "paddy/doe/discovery_json.hpp"
 #include "paddy/doe/error.hpp"
 
+#include "doe_test_util.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
 using namespace paddy::doe;
+using doe_test::gaussian;
 
 namespace {
 
@@ -45,13 +48,6 @@ Sweep makeSweep() {
   s.uniform.signature = s.u / s.u.norm();
   s.uniform.high = 20;
   return s;
-}
-
-Eigen::VectorXd gaussian(std::mt19937_64& rng, Eigen::Index n) {
-  std::normal_distribution<double> N;
-  Eigen::VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v(i) = N(rng);
-  return v;
 }
 
 // One sweep's measurement error: the shared factor and each reading's own error.

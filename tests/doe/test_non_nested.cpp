@@ -6,20 +6,15 @@
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/non_nested.hpp"
 
+#include "doe_test_util.hpp"
+
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <random>
 
 using namespace paddy::doe;
 
-namespace {
-Eigen::VectorXd gaussian(std::mt19937_64& rng, Eigen::Index n, double sd = 1.0) {
-  std::normal_distribution<double> N(0.0, sd);
-  Eigen::VectorXd v(n);
-  for (Eigen::Index i = 0; i < n; ++i) v(i) = N(rng);
-  return v;
-}
-}  // namespace
+using doe_test::gaussian;
 
 TEST_CASE("non-nested: Vuong's statistic worked by hand", "[doe][discovery]") {
   // d = ((4-1)/2, (1-0)/2, 0, (0-1)/2) = (1.5, 0.5, 0, -0.5): LR = 1.5, mean 0.375,

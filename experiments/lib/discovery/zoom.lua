@@ -3,7 +3,10 @@
 -- the centre, two axial points per dimension (on the box's faces) and every corner, 1 + 2d + 2^d
 -- points — enough for the quadratic response surface (1 + d + d(d+1)/2 coefficients) that the
 -- zoom fits (G. E. P. Box and K. B. Wilson, "On the experimental attainment of optimum
--- conditions", J. R. Stat. Soc. B 13, 1951; face-centred variant).
+-- conditions", J. R. Stat. Soc. B 13, 1951; face-centred variant). Not paddy.doe.design's CCF:
+-- that one is centred on its box, while here the centre and the axial points stay at the refit
+-- point when the box is clipped by a range (a strength near the top of its range), so the point
+-- the zoom starts from is always run.
 --
 --   local zoom = require("lib.discovery.zoom")
 --   local X, lo, hi = zoom.design({0.2, 0.05}, {0, 0}, {0.3, 0.1}, 0.15)
