@@ -48,7 +48,11 @@ struct LinearModel {
     return in;
   }
   Candidate candidate(const std::string& name, const Eigen::VectorXd& g, double high = 100.0) {
-    return Candidate{name, g, 0.0, high, std::nullopt};
+    Candidate c;
+    c.name = name;
+    c.signature = g;
+    c.high = high;
+    return c;
   }
 };
 
@@ -86,7 +90,11 @@ TEST_CASE("discovery: three observables worked by hand", "[doe][discovery]") {
   in.residual = r;
   in.covariance = 4.0 * Eigen::MatrixXd::Identity(3, 3);
   in.jacobian = J;
-  in.candidates = {{"g", G.col(0), 0.0, 10.0, std::nullopt}};
+  Candidate g;
+  g.name = "g";
+  g.signature = G.col(0);
+  g.high = 10.0;
+  in.candidates = {g};
   in.labels = {"slump", "flow", "torque"};
   const Diagnosis d = diagnose(in);
   CHECK(d.q0 == Approx(3.5).epsilon(1e-12));

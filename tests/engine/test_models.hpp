@@ -7,6 +7,7 @@
 #include <paddy/simulation.hpp>
 
 #include <memory>
+#include <utility>
 
 namespace paddy::test {
 
@@ -84,6 +85,17 @@ inline InteractionSpec linearSpring(double stiffness = 1000.0) {
   spec.damping = spec.tangential = "";
   spec.params["stiffness"] = stiffness;
   return spec;
+}
+
+// Mud spheres and a steel wall material, both pairs linear springs, no gravity: the set-up of the
+// contact-search tests. Returns {mud, steel} material indices.
+inline std::pair<int, int> mudAndSteelSprings(Simulation& sim) {
+  const int mud_id = sim.addMaterial(mud());
+  const int steel = sim.addMaterial(Material{"steel", 7800.0, 7e9, 0.3});
+  sim.setInteraction(mud_id, mud_id, linearSpring());
+  sim.setInteraction(mud_id, steel, linearSpring());
+  sim.setGravity(Vec3::Zero());
+  return {mud_id, steel};
 }
 
 }  // namespace paddy::test

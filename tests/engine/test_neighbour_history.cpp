@@ -68,6 +68,9 @@ TEST_CASE("contact history survives neighbour-list rebuilds and spatial re-sorti
   std::shuffle(sites.begin(), sites.end(), std::mt19937_64(3));
   const Vec3 v(0.3, -0.2, 0.1);
   for (const auto& x : sites) sim.addParticle(x, r, mud, v);
+  // The lattice moving as one does not make the list stale (the builds follow relative motion):
+  // a lone sphere well away from it, moving the other way, does.
+  sim.addParticle(Vec3(-20e-3, -20e-3, -20e-3), r, mud, -v);
   sim.step(300);
   REQUIRE(sim.neighbourListBuilds() > 50);
   const auto contacts = sim.contacts();

@@ -19,11 +19,7 @@ TEST_CASE("a sphere and a wall closing on each other touch at the first step the
   int checked = 0;
   for (int phase = 0; phase < 24; ++phase) {
     Simulation sim(test::testPlugins());
-    const int mud = sim.addMaterial(test::mud());
-    const int steel = sim.addMaterial(Material{"steel", 7800.0, 7e9, 0.3});
-    sim.setInteraction(mud, mud, test::linearSpring());
-    sim.setInteraction(mud, steel, test::linearSpring());
-    sim.setGravity(Vec3::Zero());
+    const auto [mud, steel] = test::mudAndSteelSprings(sim);
     // The floor rises at v, the sphere falls at v: the gap closes by 2 v per unit time while the
     // refreshes come every half skin of the sphere's travel, i.e. every skin of the gap.
     auto floor = std::make_unique<PlaneWall>("floor", steel, Vec3::Zero(), Vec3::UnitZ(), Vec3(0, 0, v));

@@ -1,5 +1,6 @@
 // Time loop: velocity Verlet for translation and rotation (spheres), with the neighbour list
-// rebuilt when any particle has moved more than half the skin, and stability guards.
+// rebuilt when two particles may have closed by more than the skin since its build, and stability
+// guards.
 //
 //   v(t+dt/2) = v(t) + dt/2 · F(t)/m,   x(t+dt) = x(t) + dt · v(t+dt/2),
 //   F(t+dt) from x(t+dt), v(t+dt/2),    v(t+dt) = v(t+dt/2) + dt/2 · F(t+dt)/m   (same for ω, T/I).
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <sstream>
 
@@ -87,13 +89,34 @@ void Simulation::Impl::refreshWalls(Simulation& s) {
   ++s.list_builds_;  // counts refreshes of the contact search: the re-sort schedule counts them
 }
 
-void Simulation::Impl::refresh(Simulation& s, double displacement_since_list_build) {
+void Simulation::Impl::refresh(Simulation& s, bool list_stale) {
   // A full rebuild here would give the same forces (the list still holds every pair within
   // reach, in the same order); it is skipped unless the list is stale or the spatial re-sort,
   // every sort_interval-th refresh, is due, so the re-sort comes at the same steps as before.
   const bool sort_due = sort_interval > 0 && s.list_builds_ % static_cast<std::size_t>(sort_interval) == 0;
-  if (sort_due || 2.0 * displacement_since_list_build > skin || s.walls_.empty()) rebuild(s);
+  if (sort_due || list_stale || s.walls_.empty()) rebuild(s);
   else refreshWalls(s);
+}
+
+bool Simulation::Impl::listStale(const Simulation& s, double largest_displacement, const Vec3& box_lo,
+                                  const Vec3& box_hi) const {
+  // A pair left out of the list was farther apart than its range + skin at the build. It can have
+  // come into range only if |Δx_i − Δx_j| > skin, Δx the displacements since the build. Three
+  // bounds of that difference, each enough, the cheaper first: |Δx_i| + |Δx_j| ≤ 2 max_k |Δx_k|;
+  // the diagonal of the box that holds every Δx_k (both lie in it); and, for c the box's centre,
+  // |Δx_i − c| + |Δx_j − c| ≤ 2 max_k |Δx_k − c| (one more pass over the particles, only when
+  // the other two cannot clear the list). The last two stay small while the particles move
+  // together (a falling pour, a drifting packing).
+  if (2.0 * largest_displacement <= skin) return false;
+  if ((box_hi - box_lo).norm() <= skin) return false;
+  const ParticleArrays& p = s.p_;
+  const std::size_t n = p.size();
+  const Vec3 c = 0.5 * (box_lo + box_hi);
+  const Vec3* x_build = list.x_at_build.data();
+  double e2 = 0.0;
+#pragma omp parallel for schedule(static) num_threads(s.threads_) reduction(max : e2)
+  for (std::size_t i = 0; i < n; ++i) e2 = std::max(e2, (p.position[i] - x_build[i] - c).squaredNorm());
+  return 2.0 * std::sqrt(e2) > skin;
 }
 
 void Simulation::Impl::sortSpatially(Simulation& s) {
@@ -207,8 +230,12 @@ void Simulation::step(std::uint64_t n) {
     const Vec3* x_build = m.list.x_at_build.size() == np ? m.list.x_at_build.data() : nullptr;
     const Vec3* x_refresh = two_refs && m.x_at_wall_refresh.size() == np ? m.x_at_wall_refresh.data() : nullptr;
     double m2 = 0.0, r2 = 0.0;
+    // The box of the displacements since the list build (listStale).
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    double lo_x = kInf, lo_y = kInf, lo_z = kInf, hi_x = -kInf, hi_y = -kInf, hi_z = -kInf;
     bool bad = x_build == nullptr || (two_refs && x_refresh == nullptr);
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m2, r2) reduction(|| : bad)
+#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m2, r2, hi_x, hi_y, hi_z) \
+    reduction(min : lo_x, lo_y, lo_z) reduction(|| : bad)
     for (std::size_t i = 0; i < np; ++i) {
       const double h_over_m = half / p_.mass[i], h_over_i = half / p_.inertia[i];
       if (closing) {
@@ -219,9 +246,13 @@ void Simulation::step(std::uint64_t n) {
       p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], h_over_i);
       p_.position[i] += dt * p_.velocity[i];
       if (x_build) {
-        const double d2 = (p_.position[i] - x_build[i]).squaredNorm();
+        const Vec3 dx = p_.position[i] - x_build[i];
+        const double d2 = dx.squaredNorm();
         if (!std::isfinite(d2)) bad = true;
         m2 = std::max(m2, d2);
+        lo_x = std::min(lo_x, dx.x()), hi_x = std::max(hi_x, dx.x());
+        lo_y = std::min(lo_y, dx.y()), hi_y = std::max(hi_y, dx.y());
+        lo_z = std::min(lo_z, dx.z()), hi_z = std::max(hi_z, dx.z());
         if (x_refresh) {
           const double e2 = (p_.position[i] - x_refresh[i]).squaredNorm();
           if (!std::isfinite(e2)) bad = true;
@@ -247,9 +278,14 @@ void Simulation::step(std::uint64_t n) {
       msg << "; the time step " << dt << " s is too large or a contact parameter is unphysical";
       throw InstabilityError(msg.str());
     }
+    // The particle list goes stale with the particles' displacements since its build; the walls'
+    // candidate lists with a particle's and a wall's together since their last refresh (which
+    // may be later than the build: refreshWalls).
+    const bool list_stale = np > 0 && m.listStale(*this, disp, Vec3(lo_x, lo_y, lo_z), Vec3(hi_x, hi_y, hi_z));
     double wall_disp = 0.0;
     for (const auto& w : walls_) wall_disp = std::max(wall_disp, w->displacementSinceListBuild());
-    if (2.0 * disp_refresh > m.skin || disp_refresh + wall_disp > m.skin) m.refresh(*this, disp);
+    const bool walls_stale = !walls_.empty() && disp_refresh + wall_disp > m.skin;
+    if (list_stale || walls_stale) m.refresh(*this, list_stale);
 
     m.computeForces(*this, Impl::ForcePass::Step);  // predicts the velocities it uses first
     if (m.max_overlap_ratio > kMaxOverlapRatio) {

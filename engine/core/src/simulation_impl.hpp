@@ -124,7 +124,10 @@ struct Simulation::Impl {
   // The contact search is due again (a particle or a wall moved too far since the last refresh):
   // rebuild the particle list when it is stale or a re-sort is due, else only the walls'
   // candidate lists (a moving cone or hopper does not make the particle list stale).
-  void refresh(Simulation& s, double displacement_since_list_build);
+  void refresh(Simulation& s, bool list_stale);
+  // Whether the particle list may miss a pair, from the displacements since its build: the
+  // largest and the box that holds them all (integrator.cpp).
+  bool listStale(const Simulation& s, double largest_displacement, const Vec3& box_lo, const Vec3& box_hi) const;
   void refreshWalls(Simulation& s);
   // Candidate lists of all walls for particles at x (current radii), marked built now.
   void buildWallCandidates(Simulation& s, const std::vector<Vec3>& x);

@@ -15,7 +15,7 @@
 // triangle), and one whose plane lies beyond reach is dropped before its closest point is taken
 // (the plane's distance is a lower bound of the triangle's). The grid is rebuilt when the query
 // radius is more than twice or less than a quarter of the one it was built for. With the
-// engine's rebuild rule (displacement > skin/2) the lists hold every triangle that can come
+// engine's refresh rule (a particle and the wall together > skin) the lists hold every triangle that can come
 // within radius + max_gap provided range ≥ max_gap + skin. CSR lists: cand_particle_[c] has the
 // triangles cand_tri_[cand_off_[c] .. cand_off_[c + 1]), ascending, in particle order whatever
 // the thread count.

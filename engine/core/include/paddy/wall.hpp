@@ -43,7 +43,8 @@ class Wall {
   virtual Vec3 velocityAt(const Vec3& p) const = 0;
   virtual Vec3 angularVelocity() const = 0;
   // How far the wall has moved (max displacement of any of its points) since the last call to
-  // markListBuilt(); the engine rebuilds its candidate lists when this exceeds half the skin.
+  // markListBuilt(); the engine refreshes the candidate lists when this plus the largest particle
+  // displacement since then exceeds the skin.
   virtual double displacementSinceListBuild() const = 0;
 
   // Candidate search, at a neighbour-list rebuild: remember which particles lie within `range`

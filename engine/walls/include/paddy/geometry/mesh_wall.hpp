@@ -8,8 +8,8 @@
 // radius + range) (enlarged if the grid would exceed 4 M cells), so a particle's query touches at
 // most 8 cells and its cost does not grow with the number of triangles. Each particle within
 // radius + range of the wall keeps the triangles within radius + range of its centre. With the
-// engine's rebuild rule (particle or wall displacement > skin/2) these lists contain every
-// triangle that can come within radius + max_gap, provided range ≥ max_gap + skin.
+// engine's refresh rule (a particle and the wall together moved more than the skin) these lists
+// contain every triangle that can come within radius + max_gap, provided range ≥ max_gap + skin.
 //
 // Contacts (findContacts), per particle, all in the body frame:
 //  1. closest point on each candidate triangle (Ericson §5.1.5, closest_point.hpp), kept if the
