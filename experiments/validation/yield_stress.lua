@@ -160,9 +160,13 @@ for li, l in ipairs(levels) do
                  vane_peak_reached = va and va.startup and va.startup.peak_reached,
                  vane_yield_stress_Pa = va and va.yield_stress_Pa,
                  slump_wall_s = e.slump and e.slump.wall, vane_wall_s = e.vane and e.vane.wall}
+    -- Each test's mean over the seeds that ran it: a depth series without the reference level has
+    -- no vane here, and its fits still compare with the slumps.
+    if row.slump_yield_stress_Pa then ts[#ts + 1] = row.slump_yield_stress_Pa end
+    if row.vane_yield_stress_Pa then tv[#tv + 1] = row.vane_yield_stress_Pa end
     if row.slump_yield_stress_Pa and row.vane_yield_stress_Pa then
       row.ratio = row.vane_yield_stress_Pa / row.slump_yield_stress_Pa
-      tv[#tv + 1], ts[#ts + 1], ratios[#ratios + 1] = row.vane_yield_stress_Pa, row.slump_yield_stress_Pa, row.ratio
+      ratios[#ratios + 1] = row.ratio
     end
     runs[#runs + 1] = row
   end

@@ -503,6 +503,18 @@ elseif(CASE STREQUAL "validation_ys")
   endif()
   result_json(GET plain ratio summary 0 ratio mean)
   expect_number(${ratio} GREATER 0 "ratio without a depth series")
+  # A depth series without the reference level (no vane in ys_runs.csv) still compares its fit with
+  # the slumps: the pooled intercept over the slumps' mean yield stress.
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out noref --threads 1 ${tiny}
+            --set vane_fill_levels=0.102,0.12 --set reference_fill_level=0.15 --set campaign_dir=${WORK}/out/campaign)
+  expect_code(${code} 0)
+  result_json(GET noref pr depth_series sets 0 pooled_c_over_slump)
+  result_json(GET noref pc depth_series sets 0 pooled c)
+  result_json(GET noref ts depth_series sets 0 slump_yield_stress_Pa mean)
+  expect_number(${ts} GREATER 0 "slumps' mean yield stress without the reference level")
+  file(WRITE ${WORK}/check_noref.lua "local pr, pc, ts = ${pr}, ${pc}, ${ts}\nassert(math.abs(pc / ts - pr) <= 1e-12 * math.abs(pr), 'pooled c over the slump')\npaddy.result{ok = true}\n")
+  run_paddy(code se run ${WORK}/check_noref.lua --out chk_noref)
+  expect_code(${code} 0)
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out one --threads 1 ${tiny}
             --set vane_fill_levels=0.12)
   expect_code(${code} 2)
