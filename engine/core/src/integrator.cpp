@@ -93,8 +93,9 @@ void Simulation::Impl::refresh(Simulation& s, bool list_stale) {
   // A full rebuild here would give the same forces (the list still holds every pair within
   // reach, in the same order); it is skipped unless the list is stale or the spatial re-sort,
   // every sort_interval-th refresh, is due, so the re-sort comes at the same steps as before.
+  // Without walls the step calls this only for a stale list.
   const bool sort_due = sort_interval > 0 && s.list_builds_ % static_cast<std::size_t>(sort_interval) == 0;
-  if (sort_due || list_stale || s.walls_.empty()) rebuild(s);
+  if (sort_due || list_stale) rebuild(s);
   else refreshWalls(s);
 }
 
