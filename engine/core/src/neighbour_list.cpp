@@ -66,25 +66,22 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
   for (const auto& law : laws) sep_max = std::max(sep_max, law.maxSeparation(0.5 * rmax));
   cell_size = std::max(2.0 * rmax + sep_max + skin, 1e-12);
 
-  CellGrid grid;
+  CellGrid& grid = grid_;
   grid.build(p.position, cell_size);
 
-  // Old list kept for the history carry-over.
-  NeighbourList old;
-  std::swap(old.start, start);
-  std::swap(old.partner_id, partner_id);
-  std::swap(old.history, history);
-  std::swap(old.live, live);
+  // The old list is kept for the history carry-over; its arrays trade places with the spare ones
+  // of the build before, so the new list reuses their memory instead of allocating (and
+  // faulting in) megabytes at every build.
+  std::swap(old_start_, start);
+  std::swap(old_partner_id_, partner_id);
+  std::swap(old_history_, history);
+  std::swap(old_live_, live);
   const std::size_t old_stride = stride;
   stride = history_stride;
+  const bool can_copy = old_stride == stride && stride > 0 && old_start_.size() >= 2;
 
-  std::vector<std::size_t> count(n + 1, 0);
-  struct Entry {
-    std::uint32_t j;
-    std::int32_t law;
-    double range2;
-  };
-  std::vector<std::vector<Entry>> per_thread(static_cast<std::size_t>(threads));
+  start.assign(n + 1, 0);  // the counts per owner first (start[i + 1]), then their prefix sums
+  per_thread_.resize(static_cast<std::size_t>(threads));
   std::string missing_pair;
 
 #pragma omp parallel num_threads(threads)
@@ -92,7 +89,7 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
     const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
-    auto& out = per_thread[static_cast<std::size_t>(t)];
+    auto& out = per_thread_[static_cast<std::size_t>(t)];
     out.clear();
     // The pair law's largest gap for the pair's R*, computed again only when the law or R* differs
     // from the previous pair's (once per law for a monodisperse fill).
@@ -104,94 +101,96 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
       const std::uint64_t idi = p.id[i];
       const int c = static_cast<int>(grid.cell_of[i]);
       const int ix = c % grid.nx, iy = (c / grid.nx) % grid.ny, iz = c / (grid.nx * grid.ny);
+      // The 3 × 3 columns of neighbour cells; the three cells of a column along x are adjacent in
+      // the cell order, so each column is one contiguous run of grid.order.
+      const int x0 = std::max(ix - 1, 0), x1 = std::min(ix + 1, grid.nx - 1);
+      std::size_t m = 0;
       for (int dz = -1; dz <= 1; ++dz) {
         const int z = iz + dz;
         if (z < 0 || z >= grid.nz) continue;
         for (int dy = -1; dy <= 1; ++dy) {
           const int y = iy + dy;
           if (y < 0 || y >= grid.ny) continue;
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int x = ix + dx;
-            if (x < 0 || x >= grid.nx) continue;
-            const int cell = grid.cellIndex(x, y, z);
-            for (std::size_t q = grid.cell_start[cell]; q < grid.cell_start[cell + 1]; ++q) {
-              const std::uint32_t j = grid.order[q];
-              if (p.id[j] <= idi) continue;
-              const double rj = p.radius[j];
-              const double d2 = (xi - p.position[j]).squaredNorm();
-              const double reach_list = ri + rj + sep_max + skin;
-              if (d2 >= reach_list * reach_list) continue;
-              const int law = law_index[static_cast<std::size_t>(p.material[i] * nmat + p.material[j])];
-              if (law < 0) {
+          const std::size_t q_end = grid.cell_start[static_cast<std::size_t>(grid.cellIndex(x1, y, z)) + 1];
+          for (std::size_t q = grid.cell_start[static_cast<std::size_t>(grid.cellIndex(x0, y, z))]; q < q_end; ++q) {
+            const std::uint32_t j = grid.order[q];
+            const double rj = p.radius[j];
+            const double d2 = (xi - p.position[j]).squaredNorm();
+            const double reach_list = ri + rj + sep_max + skin;
+            // One test for both conditions (the owner of a pair is its smaller id): most
+            // candidates fail it, so one well-predicted branch instead of two coin flips.
+            if (!((p.id[j] > idi) & (d2 < reach_list * reach_list))) continue;
+            const int law = law_index[static_cast<std::size_t>(p.material[i] * nmat + p.material[j])];
+            if (law < 0) {
 #pragma omp critical(paddy_missing_pair)
-                missing_pair = materials[p.material[i]].name + "' and '" + materials[p.material[j]].name;
-                continue;
-              }
-              const double r_eff = ri * rj / (ri + rj);
-              if (law != sep_law || r_eff != sep_r_eff) {
-                sep_law = law;
-                sep_r_eff = r_eff;
-                sep_pair = laws[law].maxSeparation(r_eff);
-              }
-              const double reach = ri + rj + sep_pair;
-              const double reach_skin = reach + skin;
-              if (d2 >= reach_skin * reach_skin) continue;
-              out.push_back({j, law, reach * reach});
-              ++count[i + 1];
+              missing_pair = materials[p.material[i]].name + "' and '" + materials[p.material[j]].name;
+              continue;
             }
+            const double r_eff = ri * rj / (ri + rj);
+            if (law != sep_law || r_eff != sep_r_eff) {
+              sep_law = law;
+              sep_r_eff = r_eff;
+              sep_pair = laws[law].maxSeparation(r_eff);
+            }
+            const double reach = ri + rj + sep_pair;
+            const double reach_skin = reach + skin;
+            if (d2 >= reach_skin * reach_skin) continue;
+            out.push_back({j, law, reach * reach});
+            ++m;
           }
         }
       }
+      start[i + 1] = m;
       // Deterministic slot order within an owner: by partner id.
-      const std::size_t m = count[i + 1];
       std::sort(out.end() - static_cast<std::ptrdiff_t>(m), out.end(),
                 [&](const Entry& a, const Entry& b) { return p.id[a.j] < p.id[b.j]; });
+    }
+#pragma omp barrier
+#pragma omp single
+    {
+      for (std::size_t i = 0; i < n; ++i) start[i + 1] += start[i];
+      const std::size_t total = start[n];
+      partner.resize(total);
+      partner_id.resize(total);
+      range2.resize(total);
+      law.resize(total);
+      history.resize(total * stride);
+      live.resize(total);
+    }  // implicit barrier: every thread sees the offsets and the sized arrays
+    // Each thread writes the slots of its own owners [lo, hi): its entries, in order, from start[lo].
+    std::size_t k = start[lo];
+    for (const Entry& e : out) {
+      partner[k] = e.j;
+      partner_id[k] = p.id[e.j];
+      range2[k] = e.range2;
+      law[k] = e.law;
+      ++k;
+    }
+    std::fill(history.begin() + static_cast<std::ptrdiff_t>(start[lo] * stride),
+              history.begin() + static_cast<std::ptrdiff_t>(start[hi] * stride), 0.0);
+    std::fill(live.begin() + static_cast<std::ptrdiff_t>(start[lo]), live.begin() + static_cast<std::ptrdiff_t>(start[hi]),
+              std::uint8_t{0});
+    // Carry the history over from the old list (the same owners: no barrier needed).
+    if (can_copy) {
+      for (std::size_t i = lo; i < hi; ++i) {
+        const std::size_t oi = i < prev_index.size() ? prev_index[i] : std::numeric_limits<std::size_t>::max();
+        if (oi == std::numeric_limits<std::size_t>::max() || oi + 1 >= old_start_.size()) continue;
+        std::size_t o = old_start_[oi];
+        const std::size_t oend = old_start_[oi + 1];
+        for (std::size_t s = start[i]; s < start[i + 1]; ++s) {
+          // Both lists are sorted by partner id: merge.
+          while (o < oend && old_partner_id_[o] < partner_id[s]) ++o;
+          if (o < oend && old_partner_id_[o] == partner_id[s] && old_live_[o]) {
+            std::copy_n(&old_history_[o * stride], stride, &history[s * stride]);
+            live[s] = 1;
+          }
+        }
+      }
     }
   }
   if (!missing_pair.empty())
     throw InputError("no interaction is defined between materials '" + missing_pair +
                      "'; add one with sim:interaction(...)");
-
-  for (std::size_t i = 0; i < n; ++i) count[i + 1] += count[i];
-  start = std::move(count);
-  const std::size_t total = start[n];
-  partner.resize(total);
-  partner_id.resize(total);
-  range2.resize(total);
-  law.resize(total);
-  history.assign(total * stride, 0.0);
-  live.assign(total, 0);
-  {
-    std::size_t k = 0;
-    for (const auto& out : per_thread)
-      for (const auto& e : out) {
-        partner[k] = e.j;
-        partner_id[k] = p.id[e.j];
-        range2[k] = e.range2;
-        law[k] = e.law;
-        ++k;
-      }
-  }
-
-  // Carry the history over from the old list.
-  const bool can_copy = old_stride == stride && stride > 0 && !old.start.empty();
-  if (can_copy) {
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::size_t oi = i < prev_index.size() ? prev_index[i] : std::numeric_limits<std::size_t>::max();
-      if (oi == std::numeric_limits<std::size_t>::max() || oi + 1 >= old.start.size()) continue;
-      std::size_t o = old.start[oi];
-      const std::size_t oend = old.start[oi + 1];
-      for (std::size_t k = start[i]; k < start[i + 1]; ++k) {
-        // Both lists are sorted by partner id: merge.
-        while (o < oend && old.partner_id[o] < partner_id[k]) ++o;
-        if (o < oend && old.partner_id[o] == partner_id[k] && old.live[o]) {
-          std::copy_n(&old.history[o * stride], stride, &history[k * stride]);
-          live[k] = 1;
-        }
-      }
-    }
-  }
   x_at_build = p.position;
 }
 

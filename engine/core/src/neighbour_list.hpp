@@ -16,6 +16,20 @@
 
 namespace paddy {
 
+// Uniform grid of cells over the particles' bounding box; the particles of each cell are
+// contiguous in `order`.
+struct CellGrid {
+  Vec3 origin = Vec3::Zero();
+  double size = 0.0;
+  int nx = 1, ny = 1, nz = 1;
+  std::vector<std::size_t> cell_start;  // size nx*ny*nz + 1
+  std::vector<std::uint32_t> order;     // particle indices grouped by cell
+  std::vector<std::uint32_t> cell_of;   // cell of each particle
+
+  void build(const std::vector<Vec3>& x, double cell_size);
+  int cellIndex(int ix, int iy, int iz) const { return (iz * ny + iy) * nx + ix; }
+};
+
 struct NeighbourList {
   std::vector<std::size_t> start;          // owner i's slots: [start[i], start[i+1])
   std::vector<std::uint32_t> partner;      // partner's current index
@@ -30,6 +44,13 @@ struct NeighbourList {
 
   std::size_t slots() const { return partner.size(); }
 
+  // A pair found by the search, before the slots are laid out.
+  struct Entry {
+    std::uint32_t j;
+    std::int32_t law;
+    double range2;
+  };
+
   // Rebuilds for the current particle state. `prev_index[i]` is particle i's index at the
   // previous build (SIZE_MAX for new particles). Throws InputError if two materials that meet
   // have no interaction.
@@ -37,20 +58,16 @@ struct NeighbourList {
              std::size_t history_stride, const std::vector<ContactLaw>& laws,
              const std::vector<int>& law_index, const std::vector<Material>& materials, int threads);
 
+ private:
+  // Scratch kept between builds (build() reuses their memory): the list before this build, the
+  // search's entries per thread, the cell grid.
+  std::vector<std::size_t> old_start_;
+  std::vector<std::uint64_t> old_partner_id_;
+  std::vector<double> old_history_;
+  std::vector<std::uint8_t> old_live_;
+  std::vector<std::vector<Entry>> per_thread_;
+  CellGrid grid_;
 };
 
-// Uniform grid of cells over the particles' bounding box; the particles of each cell are
-// contiguous in `order`.
-struct CellGrid {
-  Vec3 origin = Vec3::Zero();
-  double size = 0.0;
-  int nx = 1, ny = 1, nz = 1;
-  std::vector<std::size_t> cell_start;  // size nx*ny*nz + 1
-  std::vector<std::uint32_t> order;     // particle indices grouped by cell
-  std::vector<std::uint32_t> cell_of;   // cell of each particle
-
-  void build(const std::vector<Vec3>& x, double cell_size);
-  int cellIndex(int ix, int iy, int iz) const { return (iz * ny + iy) * nx + ix; }
-};
 
 }  // namespace paddy

@@ -83,11 +83,17 @@ struct Simulation::Impl {
   std::vector<std::uint32_t> wall_of_found;
   // Scratch of collectWallContacts and computeForces, kept to avoid allocations every step.
   struct WallContactOrder {
+    std::uint64_t sort_key;  // (id rank · walls + wall) · 2^32 + key: ordered as (id, wall, key)
     std::uint64_t particle_id;
     std::uint32_t wall, key, index;  // index into wall_scratch_found
   };
   std::vector<WallContact> wall_scratch_found, wall_scratch_tmp;
-  std::vector<WallContactOrder> wall_scratch_order;
+  std::vector<WallContactOrder> wall_scratch_order, wall_scratch_order_tmp;
+  // Rank of each particle's id among all ids (index → rank), for the wall contacts' order; ranked
+  // again at a list build when the ids in storage order changed (wall_forces.cpp).
+  std::vector<std::uint32_t> id_rank;
+  std::vector<std::uint64_t> id_rank_ids;
+  void rankIds(const ParticleArrays& p);
   std::vector<double> wall_scratch_history;  // history of this step's wall contacts
   std::vector<Vec3> wall_scratch_force;      // force on the particle of each wall contact
 
