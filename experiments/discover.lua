@@ -3,10 +3,10 @@
 --
 --   paddy run experiments/discover.lua --set input=FILE.json --out DIR
 --
--- The input file lists experiments (slump.lua, rheometer.lua at given settings) with measured
--- observables and their standard deviations, the free parameters and the candidate effects (a
--- parameter each, strength 0 = today's model). Every simulation is a campaign job keyed by its
--- content (docs/campaign.md): running the same command again after an interruption repeats
+-- The input file lists experiments (slump.lua, rheometer.lua, tack.lua at given settings) with
+-- measured observables and their standard deviations, the free parameters and the candidate
+-- effects (a parameter each, strength 0 = today's model). Every simulation is a campaign job keyed
+-- by its content (docs/campaign.md): running the same command again after an interruption repeats
 -- nothing that finished. Steps, each a block below and a section of DIR/report.html:
 --   1. Calibrate the free parameters to all measurements: Gauss-Newton (paddy.doe.gauss_newton)
 --      on forward differences with common random numbers (the same seed at θ and θ + h), bounded.

@@ -6,6 +6,15 @@ local util = require("lib.util")
 local M = {}
 
 -- "1, 2,3" → {1, 2, 3} (util.numbers); "" → nil.
+-- The campaign of a study from its parameters campaign_dir ('' = <out>/campaign), max_parallel,
+-- threads_per_job and code_version ('' = the binaries' hash); one attempt per job.
+-- → campaign, its directory
+function M.campaign(P)
+  local dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign"
+  return paddy.campaign{dir = dir, max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
+                        max_attempts = 1, code_version = P.code_version ~= "" and P.code_version or nil}, dir
+end
+
 function M.numbers(text, what)
   if text == nil or tostring(text):match("^%s*$") then return nil end
   return util.numbers(text, what)

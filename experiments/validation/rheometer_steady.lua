@@ -40,9 +40,7 @@ for _, name in ipairs({"particle_diameter", "step_time", "seed"}) do
   if extra[name] ~= nil then error("rheometer_set must not set " .. name .. " (use diameters, step_times, seeds)", 0) end
 end
 local script = report.script_dir() .. "/../rheometer.lua"
-local campaign_dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign"
-local c = paddy.campaign{dir = campaign_dir, max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
-                         max_attempts = 1, code_version = P.code_version ~= "" and P.code_version or nil}
+local c, campaign_dir = report.campaign(P)
 local jobs = {}
 for _, d in ipairs(diameters) do
   for _, st in ipairs(step_times) do

@@ -170,7 +170,7 @@ end
 local g = input.read(paddy.write_json(dir .. "/good_input.json", good()))
 check(#g.experiments[1].observables == 2 and g.experiments[1].observables[1].sigma[2] == 2, "one sigma for a vector is repeated")
 check(g.candidates[1].probe == 0.15 and g.free_parameters[1].start == 0.1 and g.settings.replicates == 5, "defaults")
-local t = good(); t.experiments[1].script = "cone.lua"; bad(t, "script = cone.lua %(allowed: slump.lua, rheometer.lua%)")
+local t = good(); t.experiments[1].script = "cone.lua"; bad(t, "script = cone.lua %(allowed: slump.lua, rheometer.lua, tack.lua%)")
 t = good(); t.experiments[1].sigma.slump_mm = nil; bad(t, "experiments%[1%]%.sigma%.slump_mm is missing")
 t = good(); t.experiments[1].sigma.profile_mm = {1, 2, 3}; bad(t, "sigma%.profile_mm has 3 entries, measured%.profile_mm has 2")
 t = good(); t.experiments[1].sigma.slump_mm = 0; bad(t, "sigma%.slump_mm%[1%] = 0 must be > 0")

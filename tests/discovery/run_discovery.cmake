@@ -95,7 +95,7 @@ elseif(CASE STREQUAL "input_errors")
  "free_parameters": [{"parameter": "jkr_surface_energy", "low": 0, "high": 0.2}],
  "candidates": [{"name": "wall_adhesion", "parameter": "mud_steel_surface_energy", "low": 0, "high": 0.3}]}]=])
   run_paddy(code se run ${SOURCE}/experiments/discover.lua --out out --threads 1 --set input=${WORK}/bad.json)
-  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "discovery input '[^']*bad.json': experiments\\[1\\]\\.script = cone\\.lua \\(allowed: slump\\.lua, rheometer\\.lua\\)")
+  if(code EQUAL 0 OR NOT LAST_STDERR MATCHES "discovery input '[^']*bad.json': experiments\\[1\\]\\.script = cone\\.lua \\(allowed: slump\\.lua, rheometer\\.lua, tack\\.lua\\)")
     message(FATAL_ERROR "bad script: exit ${code}, stderr: ${LAST_STDERR}")
   endif()
   file(WRITE ${WORK}/bad2.json [=[{"experiments": [{"name": "slump_slow", "script": "slump.lua",

@@ -64,7 +64,7 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
-elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases|mohr_coulomb_fit)$")
+elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases|mohr_coulomb_fit|tack_observables)$")
   # Library checks written in Lua (tests/experiments/<case>.lua): each raises an error on a wrong
   # answer and writes ok = true at the end.
   run_paddy(code se run ${HERE}/${CASE}.lua --out out --threads 1)
@@ -631,6 +631,54 @@ elseif(CASE STREQUAL "validation_cg")
   expect_code(${code} 0)
   foreach(f cg_runs.csv cg_summary.csv cg_tests.csv cg_study.json cg_sizes.png cg_profiles.png)
     expect_file(${WORK}/out/${f})
+  endforeach()
+
+elseif(CASE STREQUAL "tack_mini")
+  # The plate tack test (experiments/tack.lua) in miniature: ~180 spheres of 8 mm in a 60 mm cup, a
+  # 40 mm plate pressed 3 mm and pulled 8 mm, four runs at one seed: no mud-steel attraction (base),
+  # wall adhesion (wall), lubrication at 0.01 and 0.04 m/s (slow, fast). check_tack.lua asserts
+  # what a broken experiment gets wrong (no pull without attraction, a pull of several spheres'
+  # weight with wall adhesion whose end force is the weight of the mud carried, a lubrication pull
+  # that grows with the speed, the profile's length and grid); here: exit codes, outputs, stdout,
+  # and bad input refused naming the parameter and its allowed range.
+  set(tack_mini_args ${SOURCE}/experiments/tack.lua --threads 1 --seed 1
+      --set particle_diameter=0.008 --set cup_diameter=0.06 --set cup_depth=0.024 --set plate_diameter=0.04
+      --set press_depth=0.003 --set pull_distance=0.008 --set profile_points=8 --set hold_time=0.05
+      --set settle_max_time=0.5 --set min_rest_time=0.1 --set snapshot_interval=0 --set progress=false)
+  run_paddy(code se run ${tack_mini_args} --out base)
+  expect_code(${code} 0)
+  foreach(pattern "model +conventions paddy; material paddy_calibrated" "pre-load +[0-9.]+ N"
+                  "tack +peak [0-9.]+ N at [0-9.]+ mm, work" "carried +[0-9.]+ g of mud" "pictures +[^\n]*tack_curve\\.png")
+    if(NOT LAST_STDOUT MATCHES "${pattern}")
+      message(FATAL_ERROR "stdout lacks '${pattern}':\n${LAST_STDOUT}")
+    endif()
+  endforeach()
+  foreach(f tack_curve.csv tack_test.csv tack_curve.png tack_test.png)
+    expect_file(${WORK}/base/${f})
+  endforeach()
+  run_paddy(code se run ${tack_mini_args} --out wall --set mud_steel_surface_energy=0.15 --set pictures=false)
+  expect_code(${code} 0)
+  if(NOT LAST_STDOUT MATCHES "effects: wall_adhesion \\(mud_steel_surface_energy = 0\\.15\\)")
+    message(FATAL_ERROR "stdout does not name the wall adhesion:\n${LAST_STDOUT}")
+  endif()
+  run_paddy(code se run ${tack_mini_args} --out slow --set lubrication_viscosity=0.02 --set pull_speed=0.01 --set pictures=false)
+  expect_code(${code} 0)
+  run_paddy(code se run ${tack_mini_args} --out fast --set lubrication_viscosity=0.02 --set pull_speed=0.04 --set pictures=false)
+  expect_code(${code} 0)
+  run_paddy(code se run ${HERE}/check_tack.lua --set dir=${WORK} --set profile_points=8 --out check)
+  expect_code(${code} 0)
+  result_json(GET check ok ok)
+  # Bad input: a pull speed outside its range, a plate wider than the cup allows.
+  foreach(bad "speed;pull_speed=0;parameter 'pull_speed' = 0 m/s is outside the allowed range"
+              "plate;plate_diameter=0.05;plate_diameter = 0.05 m: .*allowed plate_diameter <= cup_diameter - 2 particle_diameter = 0.044 m")
+    list(GET bad 0 dir)
+    list(GET bad 1 setting)
+    list(GET bad 2 pattern)
+    run_paddy(code se run ${tack_mini_args} --out ${dir} --set ${setting})
+    expect_code(${code} 2)
+    if(NOT se MATCHES "${pattern}")
+      message(FATAL_ERROR "${setting}: expected a refusal with '${pattern}', got: ${se}")
+    endif()
   endforeach()
 
 else()

@@ -6,7 +6,7 @@ local check = require("lib.calibration.input").checks("discovery input")
 local fail, number = check.fail, check.number
 local M = {}
 
-local SCRIPTS = {["slump.lua"] = true, ["rheometer.lua"] = true}
+local SCRIPTS = {["slump.lua"] = true, ["rheometer.lua"] = true, ["tack.lua"] = true}
 local NAME = "^[%a][%w_]*$"
 -- A result key: names joined by dots (a.b reads result.a.b).
 local function result_key(key)
@@ -52,7 +52,7 @@ function M.read(path)
     if type(e.name) ~= "string" or not e.name:match(NAME) then fail(path, where .. ".name must be a name such as slump_slow") end
     if names[e.name] then fail(path, where .. ": name '" .. e.name .. "' is used twice") end
     names[e.name] = true
-    if not SCRIPTS[e.script] then fail(path, where .. ".script = " .. tostring(e.script) .. " (allowed: slump.lua, rheometer.lua)") end
+    if not SCRIPTS[e.script] then fail(path, where .. ".script = " .. tostring(e.script) .. " (allowed: slump.lua, rheometer.lua, tack.lua)") end
     if e.set ~= nil and type(e.set) ~= "table" then fail(path, where .. ".set must be an object {parameter = value}") end
     for k, v in pairs(e.set or {}) do
       if type(k) ~= "string" or not k:match(NAME) then
