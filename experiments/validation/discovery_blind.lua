@@ -37,6 +37,9 @@ local P = paddy.parameters{
   {name = "vane_shared_sd", default = 0, min = 0, max = 0.5,
    description = "the vane's torques read as one specimen: a relative error of this sd that the sweep's torques and its start-up peak share (the input's shared_error), each torque with its own vane_reading_sd beside it; 0 = every torque its own 5 % error"},
   {name = "vane_reading_sd", default = 0.015, min = 0.001, max = 0.5, description = "each vane torque's own relative reading error when vane_shared_sd > 0"},
+  {name = "tack_scale", default = 0, min = 0, max = 10,
+   description = "add the plate tack test scaled by this factor from its default 80 mm cup (lib/discovery/benchmark.lua: peak pull, tension profile, mud carried; 0 = none, else 1-10): an observable the cohesion parameter does not move"},
+  {name = "tack_speed", default = 0.04, unit = "m/s", min = 0.001, max = 1, description = "pull speed of the tack test; with tack_scale > 0"},
   {name = "truth_repeats", default = 1, type = "integer", min = 1, max = 20,
    description = "truth runs (seeds) per measurement: the measured value is their mean, as a slump test is reported as the mean of repeated tests (the reference: 10), and the input says measured_repeats = this"},
   {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
@@ -87,7 +90,8 @@ settings.refit_zoom = P.refit_zoom
 -- every cone size, and the vane when vane_scale > 0.
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,
                                       cone_scales = P.cone_scales, vane_scale = P.vane_scale, vane_speeds = P.vane_speeds, vane_startup_rpm = P.vane_startup_rpm,
-                                      vane_shared_sd = P.vane_shared_sd, vane_reading_sd = P.vane_reading_sd}
+                                      vane_shared_sd = P.vane_shared_sd, vane_reading_sd = P.vane_reading_sd,
+                                      tack_scale = P.tack_scale, tack_speed = P.tack_speed}
 
 -- Trials in a fixed order, their truths drawn from their seeds.
 local trials = {}

@@ -248,4 +248,15 @@ check(plain[#plain].shared_error == nil and plain[#plain].observables[1].rel == 
 local okv, ev = pcall(bench.experiments, {variant = "small", vane_scale = 4, vane_speeds = "10,400"})
 check(not okv and ev:match("vane_speeds = 10,400: each speed must be in %(0, 300%] rpm"), "vane speed range: %s", tostring(ev))
 
+-- The benchmark's tack test: every length of the default test scaled, the speed as given.
+local te = bench.experiments{variant = "small", tack_scale = 5, tack_speed = 0.02}
+local tack = te[#te]
+check(#te == 2 and tack.script == "tack.lua" and tack.name == "tack_x5", "benchmark tack: one tack experiment after the slump")
+check(math.abs(tack.set.cup_diameter - 0.4) < 1e-12 and math.abs(tack.set.plate_diameter - 0.25) < 1e-12 and
+      math.abs(tack.set.pull_distance - 0.06) < 1e-12 and math.abs(tack.set.press_depth - 0.01) < 1e-12 and tack.set.pull_speed == 0.02,
+      "benchmark tack: lengths scaled 5x, the pull speed kept")
+check(#bench.experiments{variant = "small"} == 1, "benchmark without tack_scale: no tack test")
+local okt, et = pcall(bench.experiments, {variant = "small", tack_scale = 20})
+check(not okt and et:match("tack_scale = 20: must be 0 %(no tack test%) or in %[1, 10%]"), "tack scale range: %s", tostring(et))
+
 paddy.result{ok = true}

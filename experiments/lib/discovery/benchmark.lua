@@ -52,6 +52,20 @@ function M.vane_observables(reading_sd)
   return {{key = "torque_Nm", abs = 0.001, rel = reading_sd}, {key = "startup.peak_torque_Nm", abs = 0.001, rel = reading_sd}}
 end
 
+-- The plate tack test (tack.lua) scaled by `scale` from its default (cup 80 mm wide and 30 mm
+-- deep, plate 50 mm, pressed 2 mm and pulled 12 mm; for 5 mm spheres), pulled at `speed` m/s.
+-- Its observables: the peak pull, the tension profile over the pull and the mud carried, each
+-- with 10 % error and at least one sphere's weight (mass) at the benchmark's 25 mm spheres (a
+-- balance and a load cell read far better; the floor is the coarse mud's own graininess).
+M.TACK_SPEED = 0.04
+M.TACK_OBSERVABLES = {{key = "tack_peak_force_N", abs = 0.135, rel = 0.1}, {key = "tack_tension_profile_N", abs = 0.135, rel = 0.1},
+                      {key = "tack_mass_on_plate_g", abs = 13.7, rel = 0.1}}
+function M.tack_set(scale, speed)
+  return {cup_diameter = 0.08 * scale, cup_depth = 0.03 * scale, plate_diameter = 0.05 * scale, approach_gap = 0.001 * scale,
+          press_depth = 0.002 * scale, pull_distance = 0.012 * scale, smoothing = 0.0002 * scale, sample_spacing = 2e-5 * scale,
+          pull_speed = speed or M.TACK_SPEED}
+end
+
 function M.noise_sd(o, value)
   return math.max(o.abs, (o.rel or 0) * math.abs(value))
 end
@@ -142,6 +156,14 @@ function M.experiments(o)
       e.shared_error = {rel_sd = shared, keys = {"torque_Nm", "startup.peak_torque_Nm"}}
     end
     exps[#exps + 1] = e
+  end
+  local ts = o.tack_scale or 0
+  if ts ~= 0 then
+    if ts < 1 or ts > 10 then error(string.format("discovery benchmark: tack_scale = %g: must be 0 (no tack test) or in [1, 10]", ts), 0) end
+    local v = o.tack_speed or M.TACK_SPEED
+    if not (v > 0 and v <= 1) then error(string.format("discovery benchmark: tack_speed = %g: must be in (0, 1] m/s", v), 0) end
+    exps[#exps + 1] = {name = string.format("tack_x%g", ts):gsub("%.", "_"), script = "tack.lua", set = M.tack_set(ts, v),
+                       observables = M.TACK_OBSERVABLES}
   end
   return exps
 end
