@@ -35,10 +35,7 @@ local script = P.slump_script
 if not script:match("^/") then script = report.script_dir() .. "/" .. script end
 local extra = report.assignments(P.slump_set, "slump_set")
 if extra.particle_diameter or extra.seed then error("slump_set must not set particle_diameter or seed (use diameters, seeds)") end
-local campaign_dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign"
-
-local c = paddy.campaign{dir = campaign_dir, max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
-                         max_attempts = P.max_attempts, code_version = P.code_version ~= "" and P.code_version or nil}
+local c, campaign_dir = report.campaign(P, P.max_attempts)
 local jobs = {}
 for _, d in ipairs(diameters) do
   for _, s in ipairs(seeds) do

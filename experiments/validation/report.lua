@@ -5,16 +5,22 @@
 local util = require("lib.util")
 local M = {}
 
--- "1, 2,3" → {1, 2, 3} (util.numbers); "" → nil.
--- The campaign of a study from its parameters campaign_dir ('' = <out>/campaign), max_parallel,
--- threads_per_job and code_version ('' = the binaries' hash); one attempt per job.
--- → campaign, its directory
-function M.campaign(P)
-  local dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign"
-  return paddy.campaign{dir = dir, max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
-                        max_attempts = 1, code_version = P.code_version ~= "" and P.code_version or nil}, dir
+-- The campaign directory of a study: its parameter campaign_dir, '' = <out>/campaign.
+function M.campaign_dir(P)
+  return P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign"
 end
 
+-- The campaign of a study from its parameters campaign_dir, max_parallel, threads_per_job and
+-- code_version ('' = the binaries' hash), with `attempts` per job (nil: the campaign's default).
+-- → campaign, its directory
+function M.campaign(P, attempts)
+  local dir = M.campaign_dir(P)
+  return paddy.campaign{dir = dir, max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
+                        max_attempts = attempts,
+                        code_version = P.code_version ~= "" and P.code_version or nil}, dir
+end
+
+-- "1, 2,3" → {1, 2, 3} (util.numbers); "" → nil.
 function M.numbers(text, what)
   if text == nil or tostring(text):match("^%s*$") then return nil end
   return util.numbers(text, what)

@@ -40,7 +40,7 @@ for _, name in ipairs({"particle_diameter", "step_time", "seed"}) do
   if extra[name] ~= nil then error("rheometer_set must not set " .. name .. " (use diameters, step_times, seeds)", 0) end
 end
 local script = report.script_dir() .. "/../rheometer.lua"
-local c, campaign_dir = report.campaign(P)
+local c, campaign_dir = report.campaign(P, 1)
 local jobs = {}
 for _, d in ipairs(diameters) do
   for _, st in ipairs(step_times) do

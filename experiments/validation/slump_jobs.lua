@@ -92,7 +92,7 @@ function M.new(P, name)
   for _, h in ipairs(M.FACTORS) do
     if self.extra[M.PARAM[h]] ~= nil then error("slump_set must not set the design factor " .. M.PARAM[h]) end
   end
-  self.campaign_dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign"
+  self.campaign_dir = report.campaign_dir(P)
   -- The step of a run that is not a fallback: the given fraction, else slump.lua's default of the conventions.
   self.timestep_fraction = P.timestep_fraction > 0 and P.timestep_fraction or mud.conventions[P.contact_conventions].timestep_fraction
   return self
@@ -113,9 +113,7 @@ function Study:params(real)
 end
 
 function Study:campaign()
-  local P = self.P
-  return paddy.campaign{dir = self.campaign_dir, max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
-                        max_attempts = P.max_attempts, code_version = P.code_version ~= "" and P.code_version or nil}
+  return (report.campaign(self.P, self.P.max_attempts))
 end
 
 -- The error a job left in an earlier invocation (failed.json), or nil.

@@ -80,7 +80,7 @@ end
 if #probes == 0 then error("probes = '" .. P.probes .. "' selects none of: base, cohesion, candidates or a candidate's parameter", 0) end
 
 local script = report.script_dir() .. "/../tack.lua"
-local c, campaign_dir = report.campaign(P)
+local c, campaign_dir = report.campaign(P, 1)
 local jobs = {}
 for _, p in ipairs(probes) do
   for _, v in ipairs(speeds) do

@@ -94,9 +94,7 @@ if fill_levels then
   end
 end
 
-local c = paddy.campaign{dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign",
-                         max_parallel = P.max_parallel, threads_per_job = P.threads_per_job, max_attempts = P.max_attempts,
-                         code_version = P.code_version ~= "" and P.code_version or nil}
+local c = report.campaign(P, P.max_attempts)
 local jobs = {}
 for li, l in ipairs(levels) do
   for _, s in ipairs(seeds) do

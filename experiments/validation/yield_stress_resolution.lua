@@ -57,9 +57,7 @@ local seeds = report.seed_list(P.seeds)
 local slump_extra, rheo_extra = ys_jobs.extras(P.parameter, P.slump_set, P.rheometer_set)
 
 local dir = report.script_dir()
-local c = paddy.campaign{dir = P.campaign_dir ~= "" and P.campaign_dir or paddy.out_dir .. "/campaign",
-                         max_parallel = P.max_parallel, threads_per_job = P.threads_per_job,
-                         code_version = P.code_version ~= "" and P.code_version or nil}
+local c = report.campaign(P)  -- the campaign's default attempts
 local jobs = {}
 local function submit(test, d, s)
   local script, extra = test == "vane" and "rheometer.lua" or "slump.lua", test == "vane" and rheo_extra or slump_extra
