@@ -125,14 +125,10 @@ if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fractio
 local dt = sim:timestep{fraction = dt_fraction}
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("rheometer: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", filled, d * 1000, cg.alpha, dt))
-local settle = phase.run(sim, {duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_every, progress = P.progress,
-                              stop = trigger.all{trigger.elapsed(P.min_rest_time), trigger.at_rest(P.rest_speed)}})
+local settle, struck = pour.settle_and_strike(sim, {who = "rheometer", poured = poured, level = P.fill_level,
+  settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time, rest_speed = P.rest_speed,
+  snapshot_every = snapshot_every, progress = P.progress})
 local settle_time = settle.duration
-local struck = sim:remove_if(function(i, x, y, z, r) return z + r > P.fill_level end)
-if poured then
-  pour.check_full("rheometer", struck, P.fill_level)
-  pour.remove_hopper(sim, poured)
-end
 local fill_solid, structure = fill_structure.measure_fill("rheometer", sim,
   {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = P.fill_level}, d)
 

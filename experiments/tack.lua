@@ -59,7 +59,6 @@ local pour = require("lib.pour")
 local fill_structure = require("lib.fill_structure")
 local util = require("lib.util")
 local sampler = require("lib.sampler")
-local trigger = require("lib.trigger")
 local phase = require("lib.phase")
 local chart = require("lib.chart")
 local obs = require("lib.tack_observables")
@@ -142,11 +141,9 @@ if P.timestep_damping then dt_fraction, dt_damping_factor = mud.timestep_fractio
 local dt = sim:timestep{fraction = dt_fraction}
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("tack: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", poured.filled, d * 1000, cg.alpha, dt))
-local settle = phase.run(sim, {duration = P.settle_max_time, every = 0.02, snapshot_every = snapshot_every, progress = P.progress,
-                              stop = trigger.all{trigger.elapsed(P.min_rest_time), trigger.at_rest(P.rest_speed)}})
-local struck = sim:remove_if(function(i, x, y, z, r) return z + r > P.cup_depth end)
-pour.check_full("tack", struck, P.cup_depth)
-pour.remove_hopper(sim, poured)
+local settle, struck = pour.settle_and_strike(sim, {who = "tack", poured = poured, level = P.cup_depth,
+  settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time, rest_speed = P.rest_speed,
+  snapshot_every = snapshot_every, progress = P.progress})
 local fill_solid, structure = fill_structure.measure_fill("tack", sim,
   {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = P.cup_depth}, d)
 local particles = sim:count()

@@ -14,6 +14,8 @@
 -- packing holds at most `solid_fraction` (default 0.64), so the hopper is made tall enough that
 -- `margin` more than a fill at that fraction lands in the container: it is always full to the rim.
 local util = require("lib.util")
+local phase = require("lib.phase")
+local trigger = require("lib.trigger")
 
 local M = {}
 
@@ -87,6 +89,23 @@ end
 -- engine has no wall removal; a wall far away costs nothing).
 function M.remove_hopper(sim, fill)
   if fill.hopper then sim:set_motion(fill.hopper, {type = "translate", velocity = {0, 0, 2.0}}) end
+end
+
+-- Settles a fill in its container and strikes it off at `level`: runs until at rest (RMS speed
+-- below rest_speed, after at least min_rest_time; at most settle_max_time), removes every sphere
+-- standing above the level, and for a poured fill (`poured`, from M.fill) checks that it was full
+-- (M.check_full) and sends its hopper away. o: who (the script's name), poured (nil for a fill
+-- placed without a hopper), level, settle_max_time, min_rest_time, rest_speed, snapshot_every,
+-- progress. → the settling phase (phase.run's result), spheres struck off
+function M.settle_and_strike(sim, o)
+  local settle = phase.run(sim, {duration = o.settle_max_time, every = 0.02, snapshot_every = o.snapshot_every, progress = o.progress,
+                                 stop = trigger.all{trigger.elapsed(o.min_rest_time), trigger.at_rest(o.rest_speed)}})
+  local struck = sim:remove_if(function(i, x, y, z, r) return z + r > o.level end)
+  if o.poured then
+    M.check_full(o.who, struck, o.level)
+    M.remove_hopper(sim, o.poured)
+  end
+  return settle, struck
 end
 
 return M
