@@ -10,6 +10,7 @@
 --   local m = obs.carried_by_cone(sim, {...})          --> {mass_g =, count =}
 --   obs.at_rest_cone_free(history.rows, 0.1, 0.01, 1)  --> whether the run can end (slump.lua step 3)
 local sampler = require("lib.sampler")
+local util = require("lib.util")
 
 local M = {}
 
@@ -66,27 +67,16 @@ function M.cone_force(samples, t0, t1)
 end
 
 -- Mud carried by the cone: spheres whose centre lies above the cone's bottom edge (z_bottom) and
--- inside its inner surface plus one radius, moving upward at more than half the lift speed
--- (they go with the cone, stuck to its inside). o = {lift_speed =, z_bottom =, radius_bottom =,
--- radius_top =, height =, density =}. Mass in grams (the mass of the simulated spheres: coarse
--- graining keeps the density).
+-- inside its inner surface plus one radius, moving with it (util.moving_with: stuck to its inside).
+-- o = {lift_speed =, z_bottom =, radius_bottom =, radius_top =, height =, density =}. → util.carried's
+-- {mass_g =, count =}
 function M.carried_by_cone(sim, o)
-  local xs, ys, zs = sim:xyz()
-  local radii = sim:radii()
-  local v = sim:velocities()
-  local count, mass = 0, 0
-  for i = 1, #xs do
-    local r, z = radii[i], zs[i]
+  return util.carried(sim, function(x, y, z, r)
     local h = z - o.z_bottom
-    if h >= 0 and h <= o.height then
-      local R = o.radius_bottom + (o.radius_top - o.radius_bottom) * h / o.height
-      if xs[i] ^ 2 + ys[i] ^ 2 <= (R + r) ^ 2 and v[i][3] > 0.5 * o.lift_speed then
-        count = count + 1
-        mass = mass + 4 / 3 * math.pi * r ^ 3 * o.density
-      end
-    end
-  end
-  return {mass_g = mass * 1000, count = count}
+    if h < 0 or h > o.height then return false end
+    local R = o.radius_bottom + (o.radius_top - o.radius_bottom) * h / o.height
+    return x ^ 2 + y ^ 2 <= (R + r) ^ 2
+  end, o.lift_speed, o.density)
 end
 
 -- Largest magnitude of the force in the load samples after the first `seen` ones (0 when there
@@ -124,7 +114,7 @@ end
 -- Whether sphere i moves with the rising cone (see carried_by_cone): used to leave such spheres
 -- out of "the highest particle under the cone" that decides when the lift stops.
 function M.moving_with_cone(vz, lift_speed)
-  return vz > 0.5 * lift_speed
+  return util.moving_with(vz, lift_speed)
 end
 
 return M

@@ -12,6 +12,8 @@
 --   local detach = obs.detach(u, Fs, peak, final, 0.1) -- last u where Fs > final + 0.1 (peak - final)
 --   local grid = obs.profile(u, F, 0.012, 12)      -- {centres =, means =}: bin means on a fixed grid
 --   local m = obs.carried(sim, {...})              -- {mass_g =, count =}: mud going up with the plate
+local util = require("lib.util")
+
 local M = {}
 
 -- Moving average over a window of travel: Fs_k = mean of F_j over the samples with
@@ -118,22 +120,13 @@ function M.profile(u, F, distance, bins)
 end
 
 -- Mud carried by the plate: spheres within the plate's footprint (centre less than plate_radius
--- + its radius from the axis) moving up faster than half the pull speed, i.e. going with the plate.
--- o = {pull_speed =, plate_radius =, density =, axis = {x, y} (default {0, 0})}. Mass in grams.
+-- + its radius from the axis) moving with it (util.moving_with: faster than half the pull speed).
+-- o = {pull_speed =, plate_radius =, density =, axis = {x, y} (default {0, 0})}. → util.carried's
+-- {mass_g =, count =}
 function M.carried(sim, o)
-  local xs, ys = sim:xyz()
-  local radii = sim:radii()
-  local v = sim:velocities()
   local ax, ay = (o.axis or {0, 0})[1], (o.axis or {0, 0})[2]
-  local count, mass = 0, 0
-  for i = 1, #xs do
-    local r = radii[i]
-    if (xs[i] - ax) ^ 2 + (ys[i] - ay) ^ 2 <= (o.plate_radius + r) ^ 2 and v[i][3] > 0.5 * o.pull_speed then
-      count = count + 1
-      mass = mass + 4 / 3 * math.pi * r ^ 3 * o.density
-    end
-  end
-  return {mass_g = mass * 1000, count = count}
+  return util.carried(sim, function(x, y, z, r) return (x - ax) ^ 2 + (y - ay) ^ 2 <= (o.plate_radius + r) ^ 2 end,
+                      o.pull_speed, o.density)
 end
 
 return M

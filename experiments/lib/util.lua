@@ -27,6 +27,30 @@ function M.total_mass(sim, density)
   return m
 end
 
+-- Whether a sphere of vertical speed vz goes up with a wall rising at `speed`: faster than half of
+-- it (stuck to the wall, not just pushed or left behind).
+function M.moving_with(vz, speed)
+  return vz > 0.5 * speed
+end
+
+-- Mud carried by a rising wall: the spheres for which inside(x, y, z, r) holds that move with it
+-- (M.moving_with). → {mass_g = Σ ρ 4/3 π r³ in grams (the simulated spheres: coarse graining keeps
+-- the density), count =}
+function M.carried(sim, inside, speed, density)
+  local xs, ys, zs = sim:xyz()
+  local radii = sim:radii()
+  local v = sim:velocities()
+  local count, mass = 0, 0
+  for i = 1, #xs do
+    local r = radii[i]
+    if inside(xs[i], ys[i], zs[i], r) and M.moving_with(v[i][3], speed) then
+      count = count + 1
+      mass = mass + 4 / 3 * math.pi * r ^ 3 * density
+    end
+  end
+  return {mass_g = mass * 1000, count = count}
+end
+
 -- Path inside the output directory.
 function M.out(name)
   return paddy.out_dir .. "/" .. name
