@@ -92,7 +92,8 @@ end
 -- adds the vane rheometer at that scale, its start-up test at o.vane_startup_rpm (default 5; 60 degrees
 -- at 5 rpm take 2 s of simulated time, at 10 rpm 1 s), at o.vane_speeds (rpm, comma-separated; '' = 10,40), its
 -- torques each with 5 % error (o.vane_shared_sd = 0) or sharing a fill's error of vane_shared_sd
--- with their own reading error o.vane_reading_sd (default VANE_READING_SD) beside it.
+-- with their own reading error o.vane_reading_sd (default VANE_READING_SD) beside it; o.tack_scale > 0
+-- adds the plate tack test at that scale (M.tack_set), pulled at o.tack_speed (default TACK_SPEED).
 function M.experiments(o)
   local exps
   if o.variant == "small" then
