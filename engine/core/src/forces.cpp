@@ -25,9 +25,10 @@ void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
   if (same) return;
   threads.resize(static_cast<std::size_t>(n_threads));
   for (auto& tb : threads) {
-    tb.force.resize(n);
-    tb.torque.resize(n);
-    tb.resist.resize(n);
+    tb.force.assign(n, Vec3::Zero());
+    tb.torque.assign(n, Vec3::Zero());
+    tb.resist.assign(n, 0.0);
+    tb.touched_lo = tb.touched_hi = 0;
     tb.work.resize(laws.size());
     for (std::size_t l = 0; l < laws.size(); ++l) {
       tb.work[l].law = static_cast<int>(l);
@@ -69,6 +70,13 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   }
   const Vec3* vel = predicted ? v_eval.data() : p.velocity.data();
   const Vec3* omg = predicted ? w_eval.data() : p.omega.data();
+  // Count the owners' costs for the next pass's split (more than one thread, forces kept).
+  const bool balance = !dry && nthreads > 1;
+  if (balance) {
+    owner_cost_sum.resize(n);
+    owner_thread_cost.assign(static_cast<std::size_t>(nthreads), 0);
+    owner_bounds_used.assign(static_cast<std::size_t>(nthreads) + 1, n);
+  }
 
 #pragma omp parallel num_threads(nthreads)
   {
@@ -79,12 +87,21 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
     ThreadBuffers& tb = threads[static_cast<std::size_t>(t)];
-    Vec3* F = (t == 0 && !dry) ? p.force.data() : tb.force.data();
-    Vec3* Tq = (t == 0 && !dry) ? p.torque.data() : tb.torque.data();
-    double* Rs = (t == 0 && !dry) ? p.resisting_torque.data() : tb.resist.data();
-    std::fill(F, F + n, Vec3::Zero());
-    std::fill(Tq, Tq + n, Vec3::Zero());
-    std::fill(Rs, Rs + n, 0.0);
+    // One thread at a step sums straight into the particle arrays. Otherwise each thread sums
+    // into its own buffers, clearing first only what its last pass wrote: its owners and their
+    // partners, a band of the spatially sorted particles (not all n every step), and the
+    // reduction below adds a buffer only over that band.
+    const bool direct = !dry && nt == 1;
+    Vec3* F = direct ? p.force.data() : tb.force.data();
+    Vec3* Tq = direct ? p.torque.data() : tb.torque.data();
+    double* Rs = direct ? p.resisting_torque.data() : tb.resist.data();
+    const std::size_t clear_lo = direct ? 0 : tb.touched_lo, clear_hi = direct ? n : std::min(tb.touched_hi, n);
+    if (clear_lo < clear_hi) {
+      std::fill(F + clear_lo, F + clear_hi, Vec3::Zero());
+      std::fill(Tq + clear_lo, Tq + clear_hi, Vec3::Zero());
+      std::fill(Rs + clear_lo, Rs + clear_hi, 0.0);
+    }
+    std::size_t touched_lo = n, touched_hi = 0;
     tb.records.clear();
     tb.max_overlap_ratio = 0.0;
     tb.worst = {};
@@ -115,12 +132,17 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         F[i] += a.force_i;
         Tq[i] += a.torque_i;
         Rs[i] += b.resist_i[m];
+        touched_lo = std::min<std::size_t>(touched_lo, i);
+        touched_hi = std::max<std::size_t>(touched_hi, i + 1);
         if (is_wall) {
           wall_force[w.j[m]] = a.force_i;
         } else {
-          F[w.j[m]] -= a.force_i;
-          Tq[w.j[m]] += a.torque_j;
-          Rs[w.j[m]] += b.resist_j[m];
+          const std::uint32_t j = w.j[m];
+          F[j] -= a.force_i;
+          Tq[j] += a.torque_j;
+          Rs[j] += b.resist_j[m];
+          touched_lo = std::min<std::size_t>(touched_lo, j);
+          touched_hi = std::max<std::size_t>(touched_hi, j + 1);
         }
         // Largest overlap / smaller radius: the division only for a candidate (the pre-test is
         // looser than the exact comparison by far more than its rounding).
@@ -154,9 +176,12 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     };
 
     // ---- particle–particle ----------------------------------------------------------------
-    // Owners split so that each thread gets about the same number of list slots (the half list
-    // puts more slots on some owners than on others: an even split by particle count leaves one
-    // thread waiting for the other).
+    // Owners split so that each thread gets about the same work: by the owners' costs at the
+    // step before (owner_bounds, rebalanceOwners), else by list slots (the half list puts more
+    // slots on some owners than on others; where the packing is loose most slots are out of
+    // range and cheap, where it is dense most are contacts: an even split by slots can leave one
+    // thread with twice the contacts of the other). The split decides only which thread's buffer
+    // a contact's force goes to; the same state gives the same split, so the same results.
     const auto owner_split = [&](int u) -> std::size_t {
       if (u <= 0) return 0;
       if (u >= nt) return n;
@@ -164,10 +189,16 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       return static_cast<std::size_t>(std::lower_bound(list.start.begin(), list.start.begin() + static_cast<std::ptrdiff_t>(n), target) -
                                       list.start.begin());
     };
-    const std::size_t lo = owner_split(t), hi = owner_split(t + 1);
+    const bool by_cost = owner_bounds.size() == static_cast<std::size_t>(nt) + 1 && owner_bounds.back() == n;
+    const std::size_t lo = by_cost ? owner_bounds[static_cast<std::size_t>(t)] : owner_split(t);
+    const std::size_t hi = by_cost ? owner_bounds[static_cast<std::size_t>(t) + 1] : owner_split(t + 1);
+    const bool count = balance;
+    std::uint64_t running = 0;
+    if (count) owner_bounds_used[static_cast<std::size_t>(t)] = lo;
     for (std::size_t i = lo; i < hi; ++i) {
       const Vec3 xi = p.position[i];
       const double ri = p.radius[i];
+      std::uint64_t in_range = 0;
       for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k) {
         const std::uint32_t j = list.partner[k];
         const Vec3 d = xi - p.position[j];
@@ -179,6 +210,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
           }
           continue;
         }
+        ++in_range;
         BatchWork& w = tb.work[static_cast<std::size_t>(list.law[k])];
         ContactBatch& b = w.batch;
         const std::size_t m = b.n;
@@ -196,7 +228,12 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         b.n = m + 1;
         if (b.n == ContactBatch::kCapacity) flush(w, false);
       }
+      if (count) {
+        running += (list.start[i + 1] - list.start[i]) + kContactCost * in_range;
+        owner_cost_sum[i] = running;
+      }
     }
+    if (count) owner_thread_cost[static_cast<std::size_t>(t)] = running;
     for (auto& w : tb.work) flush(w, false);
 
     // ---- particle–wall ----------------------------------------------------------------------
@@ -221,22 +258,38 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       if (b.n == ContactBatch::kCapacity) flush(w, true);
     }
     for (auto& w : tb.work) flush(w, true);
+    if (!direct) tb.touched_lo = touched_lo, tb.touched_hi = touched_hi;
 
     // ---- reduction in a fixed order -----------------------------------------------------------
+    // Thread 0's sum first, then thread 1's, ...: a buffer outside its band holds zeros, which
+    // the sum skips (x + 0 = x), so the order and the result are those of adding every buffer.
     if (!dry) {
 #pragma omp barrier
+      if (count && t == 0) rebalanceOwners(n, nt);  // nothing reads the bounds until the next pass
+      if (direct) {
+        for (std::size_t i = 0; i < n; ++i) p.force[i] += p.mass[i] * s.gravity_;
+      } else {
 #pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i) {
-        Vec3 f = p.force[i], tq = p.torque[i];
-        double rs = p.resisting_torque[i];
-        for (int u = 1; u < nt; ++u) {
-          f += threads[static_cast<std::size_t>(u)].force[i];
-          tq += threads[static_cast<std::size_t>(u)].torque[i];
-          rs += threads[static_cast<std::size_t>(u)].resist[i];
+        for (std::size_t i = 0; i < n; ++i) {
+          Vec3 f = Vec3::Zero(), tq = Vec3::Zero();
+          double rs = 0.0;
+          bool first = true;
+          for (int u = 0; u < nt; ++u) {
+            const ThreadBuffers& b = threads[static_cast<std::size_t>(u)];
+            if (i < b.touched_lo || i >= b.touched_hi) continue;
+            if (first) {
+              f = b.force[i], tq = b.torque[i], rs = b.resist[i];
+              first = false;
+            } else {
+              f += b.force[i];
+              tq += b.torque[i];
+              rs += b.resist[i];
+            }
+          }
+          p.force[i] = f + p.mass[i] * s.gravity_;
+          p.torque[i] = tq;
+          p.resisting_torque[i] = rs;
         }
-        p.force[i] = f + p.mass[i] * s.gravity_;
-        p.torque[i] = tq;
-        p.resisting_torque[i] = rs;
       }
     }
   }
@@ -262,6 +315,37 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   for (std::size_t c = 0; c < n_wall; ++c) s.walls_[wall_of_found[c]]->addLoad(-wall_force[c], wall_found[c].point);
   if (!s.walls_.empty()) storeWallHistory(s, wall_hist);
   forces_valid = true;
+}
+
+// The owners' split for the next pass: boundary u where the running cost of this pass reaches
+// u / nt of the total (owner_cost_sum holds each thread's running cost over its own range, from
+// owner_bounds_used). Deterministic: the costs are counts of the state's pairs.
+void Simulation::Impl::rebalanceOwners(std::size_t n, int nt) {
+  const auto nts = static_cast<std::size_t>(nt);
+  if (owner_thread_cost.size() < nts || owner_bounds_used.size() < nts + 1) return;
+  owner_bounds_used[nts] = n;
+  std::uint64_t total = 0;
+  for (std::size_t u = 0; u < nts; ++u) total += owner_thread_cost[u];
+  std::vector<std::size_t>& b = owner_bounds;
+  b.assign(nts + 1, n);
+  b[0] = 0;
+  std::size_t s = 0;
+  std::uint64_t before = 0;  // cost of the ranges of threads < s
+  for (std::size_t u = 1; u < nts; ++u) {
+    const std::uint64_t target = total / nts * u;
+    while (s + 1 < nts && before + owner_thread_cost[s] <= target) before += owner_thread_cost[s++];
+    const std::size_t r_lo = owner_bounds_used[s], r_hi = owner_bounds_used[s + 1];
+    // first owner of s's range whose running cost passes the target: it starts thread u's range
+    const auto first = owner_cost_sum.begin() + static_cast<std::ptrdiff_t>(r_lo);
+    const auto last = owner_cost_sum.begin() + static_cast<std::ptrdiff_t>(r_hi);
+    const std::size_t at = static_cast<std::size_t>(std::upper_bound(first, last, target - before) - owner_cost_sum.begin());
+    b[u] = std::max(b[u - 1], std::min(at, n));
+  }
+}
+
+std::vector<std::uint64_t> Simulation::pairWorkPerThread() const {
+  if (threads_ <= 1) return {};
+  return impl_->owner_thread_cost;
 }
 
 std::vector<ContactRecord> Simulation::contacts() const {

@@ -56,6 +56,7 @@ void Simulation::Impl::rebuild(Simulation& s) {
   if (sort_interval > 0 && s.list_builds_ % static_cast<std::size_t>(sort_interval) == 0) sortSpatially(s);
   rankIds(p);  // the wall contacts' order (wall_forces.cpp); ranks again only if the ids moved
   list.build(p, prev_index, skin, history_stride, laws, law_index, s.materials_, s.threads_);
+  owner_bounds.clear();  // the owners' costs were of the old list
   std::iota(prev_index.begin(), prev_index.end(), std::size_t{0});
   wall_max_gap = 0.0;
   for (const auto& law : laws) wall_max_gap = std::max(wall_max_gap, law.maxSeparation(rmax));

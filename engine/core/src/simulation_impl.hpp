@@ -45,8 +45,12 @@ struct WorstOverlap {
 };
 
 struct ThreadBuffers {
-  std::vector<Vec3> force, torque;   // per particle (thread 0 uses the main arrays)
+  // Per particle; zero outside [touched_lo, touched_hi), the particles this thread's last pass
+  // wrote to (it clears only those before its next pass). One thread at a step writes the
+  // particle arrays instead.
+  std::vector<Vec3> force, torque;
   std::vector<double> resist;        // per particle: resisting-torque magnitudes (same rule)
+  std::size_t touched_lo = 0, touched_hi = 0;
   std::vector<ContactRecord> records;
   double max_overlap_ratio = 0.0;
   WorstOverlap worst;                // the contact with max_overlap_ratio
@@ -98,6 +102,15 @@ struct Simulation::Impl {
   std::vector<Vec3> wall_scratch_force;      // force on the particle of each wall contact
 
   std::vector<ThreadBuffers> threads;
+  // The owners of the particle–particle loop split among the threads (forces.cpp) by their cost
+  // at the step before: an owner's list slots + kContactCost × its pairs in range (a slot out of
+  // range is one distance test, a pair in range a contact law). owner_bounds holds threads + 1
+  // owner indices; empty after a list build, until a step has counted (then split by slots).
+  static constexpr std::uint64_t kContactCost = 16;
+  std::vector<std::size_t> owner_bounds, owner_bounds_used;
+  std::vector<std::uint64_t> owner_cost_sum;     // per owner: running cost within its thread's range
+  std::vector<std::uint64_t> owner_thread_cost;  // per thread: its range's cost
+  void rebalanceOwners(std::size_t n, int nt);
   double dt_fraction = 0.0;   // requested as a fraction of the Rayleigh time (0: explicit dt)
   bool dt_explicit = false;
 

@@ -117,6 +117,10 @@ class Simulation {
   double maxSpeed() const;
   std::vector<ContactRecord> contacts() const;  // contacts active at the last force evaluation
   std::size_t neighbourListBuilds() const { return list_builds_; }
+  // Work of each thread in the particle–particle loop of the last force pass, in thread order:
+  // its owners' list slots + 16 × their pairs in range (the cost the owners' split balances,
+  // forces.cpp). Empty on one thread.
+  std::vector<std::uint64_t> pairWorkPerThread() const;
 
   // ---- checkpoint / restart (HDF5): full state incl. contact history ------------------------
   void saveCheckpoint(const std::string& path) const;
