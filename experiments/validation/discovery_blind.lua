@@ -40,6 +40,8 @@ local P = paddy.parameters{
   {name = "tack_scale", default = 0, min = 0, max = 10,
    description = "add the plate tack test scaled by this factor from its default 80 mm cup (lib/discovery/benchmark.lua: peak pull, tension profile, mud carried; 0 = none, else 1-10): an observable the cohesion parameter does not move"},
   {name = "tack_speed", default = 0.04, unit = "m/s", min = 0.001, max = 1, description = "pull speed of the tack test; with tack_scale > 0"},
+  {name = "tack_press_speed", default = 0.01, unit = "m/s", min = 0.001, max = 1, description = "speed of the tack plate's approach and press; with tack_scale > 0"},
+  {name = "tack_speeds", default = "", description = "pull speeds of the tack test, comma-separated m/s: one tack test per speed ('' = tack_speed alone); a viscous pull grows with the speed, a static one does not"},
   {name = "truth_repeats", default = 1, type = "integer", min = 1, max = 20,
    description = "truth runs (seeds) per measurement: the measured value is their mean, as a slump test is reported as the mean of repeated tests (the reference: 10), and the input says measured_repeats = this"},
   {name = "relevant_fraction", default = 0.05, min = 0, max = 0.14,
@@ -91,7 +93,8 @@ settings.refit_zoom = P.refit_zoom
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,
                                       cone_scales = P.cone_scales, vane_scale = P.vane_scale, vane_speeds = P.vane_speeds, vane_startup_rpm = P.vane_startup_rpm,
                                       vane_shared_sd = P.vane_shared_sd, vane_reading_sd = P.vane_reading_sd,
-                                      tack_scale = P.tack_scale, tack_speed = P.tack_speed}
+                                      tack_scale = P.tack_scale, tack_speed = P.tack_speed, tack_speeds = P.tack_speeds,
+                                      tack_press_speed = P.tack_press_speed}
 
 -- Trials in a fixed order, their truths drawn from their seeds.
 local trials = {}

@@ -258,5 +258,13 @@ check(math.abs(tack.set.cup_diameter - 0.4) < 1e-12 and math.abs(tack.set.plate_
 check(#bench.experiments{variant = "small"} == 1, "benchmark without tack_scale: no tack test")
 local okt, et = pcall(bench.experiments, {variant = "small", tack_scale = 20})
 check(not okt and et:match("tack_scale = 20: must be 0 %(no tack test%) or in %[1, 10%]"), "tack scale range: %s", tostring(et))
+local t2 = bench.experiments{variant = "small", tack_scale = 5, tack_speed = 0.02, tack_speeds = "0.04,0.2"}
+check(#t2 == 3 and t2[2].name == "tack_x5_40mm_per_s" and t2[3].name == "tack_x5_200mm_per_s" and
+      t2[2].set.pull_speed == 0.04 and t2[3].set.pull_speed == 0.2 and t2[3].set.plate_diameter == t2[2].set.plate_diameter and
+      t2[2].set.press_speed == bench.TACK_PRESS_SPEED,
+      "benchmark tack at two speeds: one test per speed, named by it, tack_speed ignored")
+check(bench.experiments{variant = "small", tack_scale = 5, tack_press_speed = 0.04}[2].set.press_speed == 0.04, "benchmark tack: the press speed as given")
+local oks, es = pcall(bench.experiments, {variant = "small", tack_scale = 5, tack_speeds = "0.04,2"})
+check(not oks and es:match("tack_speeds = 0.04,2: each speed must be in %(0, 1%] m/s"), "tack speeds range: %s", tostring(es))
 
 paddy.result{ok = true}

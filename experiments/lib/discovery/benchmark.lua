@@ -56,14 +56,16 @@ end
 -- deep, plate 50 mm, pressed 2 mm and pulled 12 mm; for 5 mm spheres), pulled at `speed` m/s.
 -- Its observables: the peak pull, the tension profile over the pull and the mud carried, each
 -- with 10 % error and at least one sphere's weight (mass) at the benchmark's 25 mm spheres (a
--- balance and a load cell read far better; the floor is the coarse mud's own graininess).
+-- balance and a load cell read far better; the floor is the coarse mud's own graininess). The
+-- approach and press at `press_speed` (default 0.01 m/s, the test's own default).
 M.TACK_SPEED = 0.04
 M.TACK_OBSERVABLES = {{key = "tack_peak_force_N", abs = 0.135, rel = 0.1}, {key = "tack_tension_profile_N", abs = 0.135, rel = 0.1},
                       {key = "tack_mass_on_plate_g", abs = 13.7, rel = 0.1}}
-function M.tack_set(scale, speed)
+M.TACK_PRESS_SPEED = 0.01
+function M.tack_set(scale, speed, press_speed)
   return {cup_diameter = 0.08 * scale, cup_depth = 0.03 * scale, plate_diameter = 0.05 * scale, approach_gap = 0.001 * scale,
           press_depth = 0.002 * scale, pull_distance = 0.012 * scale, smoothing = 0.0002 * scale, sample_spacing = 2e-5 * scale,
-          pull_speed = speed or M.TACK_SPEED}
+          pull_speed = speed or M.TACK_SPEED, press_speed = press_speed or M.TACK_PRESS_SPEED}
 end
 
 function M.noise_sd(o, value)
@@ -93,7 +95,9 @@ end
 -- at 5 rpm take 2 s of simulated time, at 10 rpm 1 s), at o.vane_speeds (rpm, comma-separated; '' = 10,40), its
 -- torques each with 5 % error (o.vane_shared_sd = 0) or sharing a fill's error of vane_shared_sd
 -- with their own reading error o.vane_reading_sd (default VANE_READING_SD) beside it; o.tack_scale > 0
--- adds the plate tack test at that scale (M.tack_set), pulled at o.tack_speed (default TACK_SPEED).
+-- adds the plate tack test at that scale (M.tack_set), pulled at o.tack_speed (default TACK_SPEED), or one
+-- tack test per speed of o.tack_speeds (m/s, comma-separated; '' = o.tack_speed alone), each pressed at
+-- o.tack_press_speed (default TACK_PRESS_SPEED).
 function M.experiments(o)
   local exps
   if o.variant == "small" then
@@ -161,10 +165,24 @@ function M.experiments(o)
   local ts = o.tack_scale or 0
   if ts ~= 0 then
     if ts < 1 or ts > 10 then error(string.format("discovery benchmark: tack_scale = %g: must be 0 (no tack test) or in [1, 10]", ts), 0) end
-    local v = o.tack_speed or M.TACK_SPEED
-    if not (v > 0 and v <= 1) then error(string.format("discovery benchmark: tack_speed = %g: must be in (0, 1] m/s", v), 0) end
-    exps[#exps + 1] = {name = string.format("tack_x%g", ts):gsub("%.", "_"), script = "tack.lua", set = M.tack_set(ts, v),
-                       observables = M.TACK_OBSERVABLES}
+    local name = string.format("tack_x%g", ts):gsub("%.", "_")
+    local press = o.tack_press_speed or M.TACK_PRESS_SPEED
+    if not (press > 0 and press <= 1) then error(string.format("discovery benchmark: tack_press_speed = %g: must be in (0, 1] m/s", press), 0) end
+    if (o.tack_speeds or "") == "" then
+      local v = o.tack_speed or M.TACK_SPEED
+      if not (v > 0 and v <= 1) then error(string.format("discovery benchmark: tack_speed = %g: must be in (0, 1] m/s", v), 0) end
+      exps[#exps + 1] = {name = name, script = "tack.lua", set = M.tack_set(ts, v, press), observables = M.TACK_OBSERVABLES}
+    else
+      -- one tack test per pull speed: a viscous pull grows with the speed, a static one does not
+      local speeds = util.numbers(o.tack_speeds, "tack_speeds")
+      for _, v in ipairs(speeds) do
+        if not (v > 0 and v <= 1) then error(string.format("discovery benchmark: tack_speeds = %s: each speed must be in (0, 1] m/s", o.tack_speeds), 0) end
+      end
+      for _, v in ipairs(speeds) do
+        exps[#exps + 1] = {name = string.format("%s_%dmm_per_s", name, math.floor(v * 1000 + 0.5)), script = "tack.lua",
+                           set = M.tack_set(ts, v, press), observables = M.TACK_OBSERVABLES}
+      end
+    end
   end
   return exps
 end
