@@ -27,6 +27,7 @@ local jobs = require("lib.calibration.jobs")
 local input_file = require("lib.discovery.input")
 local stack = require("lib.discovery.stack")
 local zoom = require("lib.discovery.zoom")
+local specimen = require("lib.discovery.specimen")
 local report = require("lib.discovery.report")
 
 local P = paddy.parameters{
@@ -294,9 +295,12 @@ local function fit(stage, start, dims, weights, valley)
     if ok then
       local pt = at(rs.x)
       say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", npts, fmt_point(pt), rs.misfit_predicted)
+      local X = {}
+      for k, q in ipairs(scan_pts) do X[k] = coords(q) end
       return {point = pt, step = {se = rs.se}, history = history, scan = scan,
               surface = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
-                         at_bound = rs.at_bound, points = npts}}
+                         at_bound = rs.at_bound, points = npts},
+              design = {points = X, values = scan_fs, lower = lo, upper = hi}}
     end
     say("   no response surface (%s): Gauss-Newton from the best scan point", tostring(rs))
   end
@@ -581,9 +585,17 @@ local function refit_effect(named, tentative)
                                                   labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                                   z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
                                                   q_after_threshold = thr_after.q_after_threshold} or nil
-    local se = last.se and last.se[p + 1] or 0
+    -- The strength's se: the fit's (measurement and shrunk seed covariance) and the specimens'
+    -- spread (lib/discovery/specimen.lua), added in quadrature.
+    -- With measured_repeats = n > 0 the measurements are means of n specimens (se / sqrt(n)); with
+    -- 0 their sigma already holds the scatter of repeated tests.
+    local se_fit = last.se and last.se[p + 1] or 0
+    local se_spec = S.measured_repeats > 0 and specimen.se(last.design, cov, p + 1, conf, y) or nil
+    if se_spec then se_spec = se_spec / math.sqrt(S.measured_repeats) end
+    local se = math.sqrt(se_fit ^ 2 + (se_spec or 0) ^ 2)
     local after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
-                                              high = math.min(c.high, joint.lambda + 1.96 * se), se = se},
+                                              high = math.min(c.high, joint.lambda + 1.96 * se), se = se,
+                                              se_fit = se_fit, se_specimen = se_spec},
              joint = joint, simulated = f_after, residual = r1, covariance = noise_after.covariance, diagnosis = diag_after,
              rms = stack.rms_standardised(r1, noise_after.covariance), results = conf_results, resolution = resolution_after}
     if diag_after then
@@ -598,7 +610,9 @@ local function refit_effect(named, tentative)
     after.z = z
     return after
   end
-  local after = assess(joint, best.step or {})
+  local first = best.step or {}
+  first.design = best.design
+  local after = assess(joint, first)
   -- Zoom: when the misfit left at the confirmation seeds is significant, a second response surface
   -- in a box of +-refit_zoom of each range around the refit point (a central composite design:
   -- centre, 2 axial points per dimension, every corner; clipped to the ranges), and its optimum
@@ -633,7 +647,7 @@ local function refit_effect(named, tentative)
                               at_bound = rs.at_bound, points = #X, half_width = h, round = round,
                               from = {theta = joint.theta, lambda = joint.lambda}}}
       say("   zoomed surface: best %s, predicted RMS residual %.3g", fmt_point(pt), rs.misfit_predicted)
-      local zafter = assess(zjoint, {se = rs.se})
+      local zafter = assess(zjoint, {se = rs.se, design = {points = X, values = zfs, lower = zlo, upper = zhi}})
       zjoint.zoom.kept = zafter.rms < after.rms
       say("   zoomed point: RMS standardised residual %.3g against %.3g at the point it zoomed from: %s", zafter.rms, after.rms,
           zjoint.zoom.kept and "kept" or "not kept")

@@ -267,4 +267,41 @@ check(bench.experiments{variant = "small", tack_scale = 5, tack_press_speed = 0.
 local oks, es = pcall(bench.experiments, {variant = "small", tack_scale = 5, tack_speeds = "0.04,2"})
 check(not oks and es:match("tack_speeds = 0.04,2: each speed must be in %(0, 1%] m/s"), "tack speeds range: %s", tostring(es))
 
+-- The strength's spread over specimens (lib/discovery/specimen.lua) on a linear model, where it
+-- has a closed form: observables f(x) = a x, identity weights, so the refit of y + d is
+-- x(y) + g . d with g = a / (a . a); the se is the sample sd of g . d_k over the runs.
+local specimen = require("lib.discovery.specimen")
+do
+  local a = {1, 2, 0.5, 1}
+  local X, V = {}, {}
+  for k, x in ipairs({-1, -0.5, 0, 0.5, 1}) do
+    X[k] = {x}
+    V[k] = {}
+    for i = 1, #a do V[k][i] = a[i] * x end
+  end
+  local W = {}
+  for i = 1, #a do
+    W[i] = {}
+    for k = 1, #a do W[i][k] = i == k and 1 or 0 end
+  end
+  local y = {}
+  for i = 1, #a do y[i] = a[i] * 0.2 end
+  local runs = {{0.05, -0.02, 0.01, 0.03}, {-0.04, 0.03, 0.0, -0.01}, {0.01, 0.02, -0.03, 0.02}}
+  local aa = 0
+  for i = 1, #a do aa = aa + a[i] * a[i] end
+  local gd, mean = {}, 0
+  for k, f in ipairs(runs) do
+    gd[k] = 0
+    for i = 1, #a do gd[k] = gd[k] + a[i] / aa * f[i] end
+    mean = mean + gd[k] / #runs
+  end
+  local ss = 0
+  for _, v in ipairs(gd) do ss = ss + (v - mean) ^ 2 end
+  local expected = math.sqrt(ss / (#runs - 1))
+  local se = specimen.se({points = X, values = V, lower = {-1}, upper = {1}}, W, 1, runs, y)
+  check(se and near(se, expected, 1e-6 * expected), "specimen se %s, expected %.12g", tostring(se), expected)
+  check(specimen.se({points = X, values = V, lower = {-1}, upper = {1}}, W, 1, {runs[1]}, y) == nil, "one run: no specimen se")
+  check(specimen.se(nil, W, 1, runs, y) == nil, "no design: no specimen se")
+end
+
 paddy.result{ok = true}
