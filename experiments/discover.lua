@@ -27,7 +27,6 @@ local jobs = require("lib.calibration.jobs")
 local input_file = require("lib.discovery.input")
 local stack = require("lib.discovery.stack")
 local zoom = require("lib.discovery.zoom")
-local specimen = require("lib.discovery.specimen")
 local report = require("lib.discovery.report")
 
 local P = paddy.parameters{
@@ -585,13 +584,20 @@ local function refit_effect(named, tentative)
                                                   labels = labels, blocks = blocks, alpha = S.alpha, confusable = S.confusable, strong_margin = S.strong_margin,
                                                   z_threshold = thr_after.z_threshold, q0_threshold = thr_after.q0_threshold,
                                                   q_after_threshold = thr_after.q_after_threshold} or nil
-    -- The strength's se: the fit's (measurement and shrunk seed covariance) and the specimens'
-    -- spread (lib/discovery/specimen.lua), added in quadrature.
-    -- With measured_repeats = n > 0 the measurements are means of n specimens (se / sqrt(n)); with
-    -- 0 their sigma already holds the scatter of repeated tests.
+    -- The strength's se: the fit's (measurement and shrunk seed covariance) and its spread over
+    -- specimens, added in quadrature. The spread: the refit's response surface solved again with
+    -- the measurements moved by +- each confirmation run's deviation (paddy.doe.response_surface,
+    -- specimen_runs; the confirmation runs scatter as the effect makes them, the replicates without
+    -- it do not). With measured_repeats = n > 0 the measurements are means of n specimens (spread
+    -- / sqrt(n)); with 0 their sigma already holds the scatter of repeated tests.
     local se_fit = last.se and last.se[p + 1] or 0
-    local se_spec = S.measured_repeats > 0 and specimen.se(last.design, cov, p + 1, conf, y) or nil
-    if se_spec then se_spec = se_spec / math.sqrt(S.measured_repeats) end
+    local se_spec
+    if S.measured_repeats > 0 and last.design and #conf >= 2 then
+      local d = last.design
+      local ok, rs = pcall(doe.response_surface, {points = d.points, values = d.values, measured = y, covariance = cov,
+                                                  lower = d.lower, upper = d.upper, specimen_runs = conf})
+      if ok and rs.specimen_se then se_spec = rs.specimen_se[p + 1] / math.sqrt(S.measured_repeats) end
+    end
     local se = math.sqrt(se_fit ^ 2 + (se_spec or 0) ^ 2)
     local after = {theta = joint.theta, strength = {value = joint.lambda, low = math.max(c.low, joint.lambda - 1.96 * se),
                                               high = math.min(c.high, joint.lambda + 1.96 * se), se = se,

@@ -297,12 +297,14 @@ json responseSurfaceJson(const json& o) {
   in.covariance = covarianceOf(o, in.measured.size(), true);
   in.lower = vector(required(o, "lower"), "lower");
   in.upper = vector(required(o, "upper"), "upper");
+  if (o.contains("specimen_runs") && !o["specimen_runs"].is_null()) in.specimenRuns = matrix(o["specimen_runs"], "specimen_runs");
   const ResponseSurfaceFit f = fitResponseSurface(in);
   json j{{"x", toJson(f.x)}, {"predicted", toJson(f.predicted)}, {"jacobian", toJson(f.jacobian)}, {"covariance", toJson(f.covariance)},
          {"se", toJson(f.se)}, {"residual_sd", toJson(f.residualSd)}, {"misfit_predicted", f.misfitPredicted}, {"terms", f.terms},
          {"coefficients", toJson(f.coefficients)}};
   j["at_bound"] = json::array();
   for (int b : f.atBound) j["at_bound"].push_back(b < 0 ? "lower" : b > 0 ? "upper" : "");
+  j["specimen_se"] = f.specimenSe.size() > 0 ? toJson(f.specimenSe) : json(nullptr);
   return j;
 }
 

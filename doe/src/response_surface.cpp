@@ -40,6 +40,13 @@ void check(const ResponseSurfaceInput& in) {
   if (!in.points.allFinite()) throw DoeError("points: non-finite value");
   if (!in.values.allFinite()) throw DoeError("values: non-finite value");
   if (!in.measured.allFinite()) throw DoeError("measured: non-finite value");
+  if (in.specimenRuns.rows() > 0) {
+    if (in.specimenRuns.rows() < 2) throw DoeError("specimen_runs: at least two runs are needed for a spread, got 1");
+    if (in.specimenRuns.cols() != m)
+      throw DoeError("specimen_runs: each run must have " + std::to_string(m) + " entries (the values' columns), got " +
+                     std::to_string(in.specimenRuns.cols()));
+    if (!in.specimenRuns.allFinite()) throw DoeError("specimen_runs: non-finite value");
+  }
   for (Eigen::Index j = 0; j < d; ++j) {
     if (!std::isfinite(in.lower(j)) || !std::isfinite(in.upper(j)) || !(in.lower(j) < in.upper(j)))
       throw DoeError("lower, upper: entry " + std::to_string(j + 1) + " must be finite with lower < upper");
@@ -79,30 +86,36 @@ ResponseSurfaceFit fitResponseSurface(const ResponseSurfaceInput& in) {
 
   const Whitening W(in.covariance, "covariance");
   auto predict = [&](const Eigen::VectorXd& u) { return Eigen::VectorXd(out.coefficients.transpose() * quadraticTerms(u)); };
-  auto misfit = [&](const Eigen::VectorXd& u) { return W.apply(Eigen::VectorXd(in.measured - predict(u))).squaredNorm(); };
 
-  // Grid search in coded units over [lo, hi]^d, then zoom around the best node.
+  // The minimiser of the misfit to y in coded units: a grid search over [lo, hi]^d, then zoom
+  // around the best node. Returns the best node and its misfit.
   const int g = std::max(3, static_cast<int>(std::floor(std::pow(20000.0, 1.0 / static_cast<double>(d)))));
-  Eigen::VectorXd lo = Eigen::VectorXd::Constant(d, -1.0), hi = Eigen::VectorXd::Constant(d, 1.0);
-  Eigen::VectorXd best = Eigen::VectorXd::Zero(d);
-  double bestQ = std::numeric_limits<double>::infinity();
-  for (int round = 0; round < 7; ++round) {
-    std::vector<int> idx(static_cast<std::size_t>(d), 0);
-    Eigen::VectorXd u(d);
-    while (true) {
-      for (Eigen::Index j = 0; j < d; ++j) u(j) = lo(j) + (hi(j) - lo(j)) * idx[static_cast<std::size_t>(j)] / (g - 1);
-      const double Q = misfit(u);
-      if (Q < bestQ) bestQ = Q, best = u;
-      Eigen::Index j = 0;
-      while (j < d && ++idx[static_cast<std::size_t>(j)] == g) idx[static_cast<std::size_t>(j++)] = 0;
-      if (j == d) break;
+  auto minimise = [&](const Eigen::VectorXd& y, double& bestQ) {
+    auto misfit = [&](const Eigen::VectorXd& u) { return W.apply(Eigen::VectorXd(y - predict(u))).squaredNorm(); };
+    Eigen::VectorXd lo = Eigen::VectorXd::Constant(d, -1.0), hi = Eigen::VectorXd::Constant(d, 1.0);
+    Eigen::VectorXd best = Eigen::VectorXd::Zero(d);
+    bestQ = std::numeric_limits<double>::infinity();
+    for (int round = 0; round < 7; ++round) {
+      std::vector<int> idx(static_cast<std::size_t>(d), 0);
+      Eigen::VectorXd u(d);
+      while (true) {
+        for (Eigen::Index j = 0; j < d; ++j) u(j) = lo(j) + (hi(j) - lo(j)) * idx[static_cast<std::size_t>(j)] / (g - 1);
+        const double Q = misfit(u);
+        if (Q < bestQ) bestQ = Q, best = u;
+        Eigen::Index j = 0;
+        while (j < d && ++idx[static_cast<std::size_t>(j)] == g) idx[static_cast<std::size_t>(j++)] = 0;
+        if (j == d) break;
+      }
+      for (Eigen::Index j = 0; j < d; ++j) {
+        const double cell = (hi(j) - lo(j)) / (g - 1);
+        lo(j) = std::max(-1.0, best(j) - 2 * cell);
+        hi(j) = std::min(1.0, best(j) + 2 * cell);
+      }
     }
-    for (Eigen::Index j = 0; j < d; ++j) {
-      const double cell = (hi(j) - lo(j)) / (g - 1);
-      lo(j) = std::max(-1.0, best(j) - 2 * cell);
-      hi(j) = std::min(1.0, best(j) + 2 * cell);
-    }
-  }
+    return best;
+  };
+  double bestQ = 0.0;
+  const Eigen::VectorXd best = minimise(in.measured, bestQ);
   out.x = c + best.cwiseProduct(h);
   out.predicted = predict(best);
   out.misfitPredicted = std::sqrt(bestQ / static_cast<double>(m));
@@ -123,6 +136,22 @@ ResponseSurfaceFit fitResponseSurface(const ResponseSurfaceInput& in) {
   out.se = out.covariance.diagonal().cwiseMax(0.0).cwiseSqrt();
   out.atBound.assign(static_cast<std::size_t>(d), 0);
   for (Eigen::Index j = 0; j < d; ++j) out.atBound[static_cast<std::size_t>(j)] = best(j) <= -1.0 ? -1 : best(j) >= 1.0 ? 1 : 0;
+
+  // Spread over specimens (header comment): the minimiser again for y +- each run's deviation.
+  const auto K = in.specimenRuns.rows();
+  if (K >= 2) {
+    const Eigen::VectorXd mean = in.specimenRuns.colwise().mean().transpose();
+    Eigen::MatrixXd xs(2 * K, d);
+    for (Eigen::Index k = 0; k < K; ++k) {
+      const Eigen::VectorXd dev = in.specimenRuns.row(k).transpose() - mean;
+      double q = 0.0;
+      xs.row(2 * k) = (c + minimise(Eigen::VectorXd(in.measured + dev), q).cwiseProduct(h)).transpose();
+      xs.row(2 * k + 1) = (c + minimise(Eigen::VectorXd(in.measured - dev), q).cwiseProduct(h)).transpose();
+    }
+    const Eigen::RowVectorXd xm = xs.colwise().mean();
+    const double scale = static_cast<double>(K) / static_cast<double>(K - 1) / static_cast<double>(2 * K);
+    out.specimenSe = ((xs.rowwise() - xm).colwise().squaredNorm().transpose() * scale).cwiseSqrt();
+  }
   return out;
 }
 

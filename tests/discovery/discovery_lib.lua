@@ -267,11 +267,12 @@ check(bench.experiments{variant = "small", tack_scale = 5, tack_press_speed = 0.
 local oks, es = pcall(bench.experiments, {variant = "small", tack_scale = 5, tack_speeds = "0.04,2"})
 check(not oks and es:match("tack_speeds = 0.04,2: each speed must be in %(0, 1%] m/s"), "tack speeds range: %s", tostring(es))
 
--- The strength's spread over specimens (lib/discovery/specimen.lua) on a linear model, where it
--- has a closed form: observables f(x) = a x, identity weights, so the refit of y + d is
--- x(y) + g . d with g = a / (a . a); the se is the sample sd of g . d_k over the runs.
-local specimen = require("lib.discovery.specimen")
+-- The strength's spread over specimens (paddy.doe.response_surface's specimen_runs, used by step 4
+-- of discover.lua) on a linear model, where it has a closed form: observables f(x) = a x, identity
+-- weights, so the refit of y + d is x(y) + g . d with g = a / (a . a); the spread is the sample sd
+-- of g . d_k over the runs.
 do
+  local doe = require("paddy.doe")
   local a = {1, 2, 0.5, 1}
   local X, V = {}, {}
   for k, x in ipairs({-1, -0.5, 0, 0.5, 1}) do
@@ -298,10 +299,14 @@ do
   local ss = 0
   for _, v in ipairs(gd) do ss = ss + (v - mean) ^ 2 end
   local expected = math.sqrt(ss / (#runs - 1))
-  local se = specimen.se({points = X, values = V, lower = {-1}, upper = {1}}, W, 1, runs, y)
-  check(se and near(se, expected, 1e-6 * expected), "specimen se %s, expected %.12g", tostring(se), expected)
-  check(specimen.se({points = X, values = V, lower = {-1}, upper = {1}}, W, 1, {runs[1]}, y) == nil, "one run: no specimen se")
-  check(specimen.se(nil, W, 1, runs, y) == nil, "no design: no specimen se")
+  local design = {points = X, values = V, measured = y, covariance = W, lower = {-1}, upper = {1}}
+  check(doe.response_surface(design).specimen_se == nil, "no specimen runs: no spread")
+  design.specimen_runs = runs
+  local se = doe.response_surface(design).specimen_se
+  check(se and near(se[1], expected, 1e-6 * expected), "specimen se %s, expected %.12g", tostring(se and se[1]), expected)
+  design.specimen_runs = {runs[1]}
+  local ok, err = pcall(doe.response_surface, design)
+  check(not ok and tostring(err):match("specimen_runs: at least two runs"), "one specimen run: %s", tostring(err))
 end
 
 paddy.result{ok = true}

@@ -143,6 +143,49 @@ TEST_CASE("response surface: one parameter", "[doe][discovery]") {
   CHECK(f.jacobian(0, 0) == Approx(5.0).margin(1e-6));
 }
 
+// Spread over specimens on a linear response, where it has a closed form: f(x) = a x, identity
+// weights, so the minimiser for y + dev is x(y) + g . dev with g = a / (a . a), and specimen_se is
+// the sample sd of g . d_k over the runs (K - 1 degrees of freedom).
+TEST_CASE("response surface: spread over specimens on a linear response", "[doe][discovery]") {
+  const Eigen::Vector4d a(1.0, 2.0, 0.5, 1.0);
+  ResponseSurfaceInput in;
+  in.points.resize(5, 1);
+  in.values.resize(5, 4);
+  for (int i = 0; i < 5; ++i) {
+    const double x = -1.0 + 0.5 * i;
+    in.points(i, 0) = x;
+    in.values.row(i) = (a * x).transpose();
+  }
+  in.lower = Eigen::VectorXd::Constant(1, -1.0);
+  in.upper = Eigen::VectorXd::Constant(1, 1.0);
+  in.covariance = Eigen::MatrixXd::Identity(4, 4);
+  in.measured = a * 0.2;
+  CHECK(fitResponseSurface(in).specimenSe.size() == 0);  // no runs, no spread
+  in.specimenRuns.resize(3, 4);
+  in.specimenRuns << 0.05, -0.02, 0.01, 0.03, -0.04, 0.03, 0.0, -0.01, 0.01, 0.02, -0.03, 0.02;
+  const Eigen::Vector4d g = a / a.squaredNorm();
+  Eigen::Vector3d gd;
+  const Eigen::Vector4d mean = in.specimenRuns.colwise().mean().transpose();
+  for (int k = 0; k < 3; ++k) gd(k) = g.dot(in.specimenRuns.row(k).transpose() - mean);
+  const double expected = std::sqrt((gd.array() - gd.mean()).square().sum() / 2.0);
+  const ResponseSurfaceFit f = fitResponseSurface(in);
+  REQUIRE(f.specimenSe.size() == 1);
+  CHECK(f.x(0) == Approx(0.2).margin(1e-9));
+  CHECK(f.specimenSe(0) == Approx(expected).epsilon(1e-6));
+  // a deviation along a direction the response does not have moves nothing
+  Eigen::Vector4d orth(2.0, -1.0, 0.0, 0.0);  // a . orth = 0
+  in.specimenRuns.resize(2, 4);
+  in.specimenRuns.row(0) = 0.01 * orth.transpose();
+  in.specimenRuns.row(1) = -0.01 * orth.transpose();
+  CHECK(fitResponseSurface(in).specimenSe(0) == Approx(0.0).margin(1e-9));
+  in.specimenRuns.resize(1, 4);
+  in.specimenRuns.setZero();
+  CHECK_THROWS_WITH(fitResponseSurface(in), Catch::Contains("specimen_runs: at least two runs"));
+  in.specimenRuns.resize(2, 3);
+  in.specimenRuns.setZero();
+  CHECK_THROWS_WITH(fitResponseSurface(in), Catch::Contains("specimen_runs: each run must have 4 entries"));
+}
+
 TEST_CASE("response surface: input errors name the field", "[doe][discovery]") {
   auto fails = [](const ResponseSurfaceInput& in, const char* what) {
     try {

@@ -21,6 +21,15 @@
 //   se = sqrt(diag), misfit_predicted = sqrt(Q(x*) / m)
 // (the covariance ignores the surface's own coefficient error: with n - q residual degrees of
 // freedom it is the linearised Gauss–Newton covariance at x*).
+// Spread over specimens (optional specimen runs f_1..f_K, K >= 2, simulated at x* at other seeds):
+// the measurements are one specimen whose seed scatter moves whole curves together, which a
+// covariance shrunk toward its diagonal counts as independent readings, so se above is too small
+// (docs/discovery.md, "The tack test at two pull speeds"). Each run's deviation d_k = f_k - mean
+// stands for another specimen: the minimiser is found again for y + d_k and y - d_k, and
+//   specimen_se_j = sqrt( sum over the 2K minimisers of (x_j - mean_j)^2 / (2K) * K / (K - 1) ),
+// for a linear response exactly the sample sd of x_j's change g_j . d_k over the K runs (a
+// parametric bootstrap over specimens: B. Efron and R. J. Tibshirani, An Introduction to the
+// Bootstrap, Chapman & Hall 1993, ch. 6; the antithetic pairs keep the draws' mean at y).
 #pragma once
 #include <Eigen/Dense>
 #include <vector>
@@ -33,6 +42,7 @@ struct ResponseSurfaceInput {
   Eigen::VectorXd measured;    ///< m
   Eigen::MatrixXd covariance;  ///< m x m, symmetric positive definite (the misfit's weights)
   Eigen::VectorXd lower, upper;  ///< d, lower < upper
+  Eigen::MatrixXd specimenRuns;  ///< K x m, optional (0 rows: none; else K >= 2): runs at x* at other seeds
 };
 
 struct ResponseSurfaceFit {
@@ -46,6 +56,7 @@ struct ResponseSurfaceFit {
   double misfitPredicted = 0;     ///< sqrt(Q(x) / m)
   int terms = 0;                  ///< q
   std::vector<int> atBound;       ///< d: -1 at lower, +1 at upper, 0 inside
+  Eigen::VectorXd specimenSe;     ///< d, the spread of x over specimens; empty without specimen runs
 };
 
 /// Evaluates the quadratic terms of coded coordinates u (1, u_j, u_j u_k for j <= k).
@@ -53,7 +64,7 @@ Eigen::VectorXd quadraticTerms(const Eigen::VectorXd& u);
 
 /// Throws DoeError naming the field: dimension mismatch, non-finite values, too few points,
 /// points outside the box, lower >= upper, a rank-deficient design, a covariance that is not
-/// positive definite.
+/// positive definite, a single specimen run or specimen runs of another width than the values.
 ResponseSurfaceFit fitResponseSurface(const ResponseSurfaceInput& in);
 
 }  // namespace paddy::doe
