@@ -78,7 +78,7 @@ TEST_CASE("a damaged checkpoint is refused naming the file, the dataset and the 
   };
   const std::vector<Case> cases = {
       {"dt NaN", [](hid_t f) { setAttribute(f, "dt", std::nan("")); }, "attribute 'dt'", "not a finite number"},
-      {"another version", [](hid_t f) { setAttribute(f, "version", 3); }, "attribute 'version'", "checkpoint version 2"},
+      {"another version", [](hid_t f) { setAttribute(f, "version", 2); }, "attribute 'version'", "checkpoint version 3"},
       {"steps fractional", [](hid_t f) { setAttribute(f, "steps", 10.5); }, "attribute 'steps'", "not a whole number"},
       {"a mass that is not its sphere's", [](hid_t f) { changeFirst(f, "particles/mass", [](double m) { return 2 * m; }); }, "dataset 'particles/mass'",
        "the density of material"},

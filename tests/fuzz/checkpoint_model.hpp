@@ -85,7 +85,7 @@ inline const std::vector<Layout>& checkpointDatasets() {
       {"list/partner_id", Kind::U64, 1},    {"list/range2", Kind::F64, 1},        {"list/law", Kind::I64, 1},
       {"list/history", Kind::F64, 1},       {"list/live", Kind::U64, 1},          {"list/x_at_build", Kind::F64, 3},
       {"walls/x_at_refresh", Kind::F64, 3}, {"walls/particle_id", Kind::U64, 1},  {"walls/wall", Kind::U64, 1},
-      {"walls/key", Kind::U64, 1},          {"walls/history", Kind::F64, 1}};
+      {"walls/key", Kind::U64, 1},          {"walls/history", Kind::F64, 1},      {"list/owner_bounds", Kind::U64, 1}};
   return l;
 }
 inline const std::vector<std::string>& checkpointAttributes() {

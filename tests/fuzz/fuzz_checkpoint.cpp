@@ -274,7 +274,7 @@ std::string mustRefuse(Model& m) {
     if (a->stored == Stored::Text || a->stored == Stored::U8) return "attribute '" + name + "' not a single number";
     const double v = storedValue(a->value, a->stored);
     if (!std::isfinite(v)) return "attribute '" + name + "' not finite";
-    if (name == "version" && v != 2.0) return "version " + std::to_string(v);
+    if (name == "version" && v != 3.0) return "version " + std::to_string(v);
   }
   const bool refreshed = flag && storedValue(flag->value, flag->stored) == 1.0;
   const Dataset* id = m.set("particles/id");

@@ -64,6 +64,7 @@ void Simulation::saveCheckpoint(const std::string& path) const {
     f.write("list/history", l.history);
     f.write("list/live", std::vector<std::uint64_t>(l.live.begin(), l.live.end()));
     f.write("list/x_at_build", flatten(l.x_at_build), 3);
+    f.write("list/owner_bounds", std::vector<std::uint64_t>(impl_->owner_bounds.begin(), impl_->owner_bounds.end()));
     f.write("walls/x_at_refresh", flatten(impl_->walls_refreshed ? impl_->x_at_wall_refresh : l.x_at_build), 3);
     f.writeAttr("cell_size", l.cell_size);
     std::vector<std::uint64_t> wid, wwall, wkey;

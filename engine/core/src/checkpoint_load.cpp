@@ -202,6 +202,13 @@ void Simulation::loadCheckpoint(const std::string& path) {
   const auto history = r.table<double>("list/history", slots * stride);
   const auto live = r.table<std::uint64_t>("list/live", slots);
   const auto x_at_build = r.vectors("list/x_at_build", list_valid ? n : Reader::kAnyRows);
+  // The threads' split of the owners: none, or 0 = b_0 <= b_1 <= ... <= b_T = n.
+  const auto owner_bounds = r.table<std::uint64_t>("list/owner_bounds", Reader::kAnyRows);
+  if (!owner_bounds.empty()) {
+    bool ok = owner_bounds.size() >= 2 && owner_bounds.front() == 0 && owner_bounds.back() == n;
+    for (std::size_t k = 1; ok && k < owner_bounds.size(); ++k) ok = owner_bounds[k - 1] <= owner_bounds[k];
+    if (!ok) r.refuse("dataset 'list/owner_bounds'", "is not a split of the " + Reader::str(n) + " particles (0 = b_0 <= ... <= b_T = n)");
+  }
   const int nmat = static_cast<int>(materials_.size());
   for (std::size_t i = 0; i < owners; ++i) {
     for (std::size_t k = start[i]; k < start[i + 1]; ++k) {
@@ -294,6 +301,7 @@ void Simulation::loadCheckpoint(const std::string& path) {
   l.history = history;
   l.live.assign(live.begin(), live.end());
   l.x_at_build = x_at_build;
+  impl_->owner_bounds.assign(owner_bounds.begin(), owner_bounds.end());
   l.cell_size = cell_size;
   l.stride = impl_->history_stride;
   impl_->x_at_wall_refresh = std::move(x_at_wall_refresh);
