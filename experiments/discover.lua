@@ -763,6 +763,33 @@ elseif named then
                     .. (diag_after and string.format(" (Q0 = %.4g)", diag_after.q0) or " (no other candidate to test the remainder with)")
       outcome.tried, after = after, nil
       named = nil
+      -- Runner-ups (settings.runner_up_refits = k > 0): the score test is linear, and a strong
+      -- effect's linear estimate can fall outside its range or its score below another's; so the
+      -- next k candidates whose scores are significant (by z) are added and recalibrated in turn,
+      -- and the first whose refit confirms it (strength above its smallest relevant one, misfit
+      -- significantly lower, nothing significant left at the new seeds) is named.
+      local order = {}
+      for _, x in ipairs(diag.candidates or {}) do
+        if x.name ~= diag.best and (x.p_holm or 1) < S.alpha then order[#order + 1] = x end
+      end
+      table.sort(order, function(a, b) return (a.z or 0) > (b.z or 0) end)
+      local runner_ups = {}
+      for k = 1, math.min(S.runner_up_refits, #order) do
+        local name2 = order[k].name
+        say("4. runner-up %d: %s (z = %.3g) added and recalibrated", k, name2, order[k].z or 0 / 0)
+        local a2, j2, c2 = refit_effect(name2, true)
+        local w2, ng2, left2 = refit_checks(a2, j2, c2)
+        local ok2 = not (w2 or ng2 or left2)
+        runner_ups[#runner_ups + 1] = {name = name2, strength = a2.strength, misfit_after = a2.rms, confirmed = ok2,
+                                       q0_after = a2.diagnosis and a2.diagnosis.q0 or nil}
+        if ok2 then
+          diag.decision, diag.named = "effect", name2
+          diag.reason = diag.reason .. string.format("; the runner-up %s, added and recalibrated, leaves no significant misfit", name2)
+          after, named = a2, name2
+          break
+        end
+      end
+      if #runner_ups > 0 then outcome.runner_up_refits = runner_ups end
     end
     say("   decision after the recalibration: %s%s", diag.decision, diag.named and (" - " .. diag.named) or "")
   end

@@ -50,6 +50,8 @@ local P = paddy.parameters{
    description = "seeds each candidate's signature is averaged over (settings.signature_seeds; 0 = the variant's: full 2, tiny and small 3)"},
   {name = "confirm_seeds", default = 0, type = "integer", min = 0, max = 10,
    description = "seeds of the confirmation runs at the refit point (settings.confirm_seeds; 0 = the variant's: 2); their scatter also gives the strength's specimen se"},
+  {name = "runner_up_refits", default = 0, type = "integer", min = 0, max = 3,
+   description = "the workflow's settings.runner_up_refits: when the best candidate's refit leaves a significant misfit, the next candidates with significant scores are refitted in turn (0 = none, as the runs before it)"},
   {name = "probe_fraction", default = 0.5, min = 0.05, max = 1,
    description = "each candidate's probe strength as a fraction of its range (its input key 'probe'): a signature's seed noise does not grow with the probe, its signal does"},
   {name = "refit_zoom", default = 0.15, min = 0, max = 0.5,
@@ -90,6 +92,7 @@ if P.tiny or P.small then
 end
 if P.signature_seeds > 0 then settings.signature_seeds = P.signature_seeds end
 if P.confirm_seeds > 0 then settings.confirm_seeds = P.confirm_seeds end
+if P.runner_up_refits > 0 then settings.runner_up_refits = P.runner_up_refits end
 settings.refit_zoom = P.refit_zoom
 -- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
 -- every cone size, and the vane when vane_scale > 0.

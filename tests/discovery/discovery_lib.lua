@@ -194,6 +194,10 @@ t = good(); t.settings = {ambiguous_refits = "yes"}; bad(t, "settings%.ambiguous
 t = good(); t.settings = {ambiguous_refits = false}
 check(input.read(paddy.write_json(dir .. "/ambiguous_input.json", t)).settings.ambiguous_refits == false, "ambiguous refits can be turned off")
 t = good(); t.settings = {refit_zoom = 0.01}; bad(t, "settings%.refit_zoom = 0%.01: allowed 0 %(off%) or 0%.02 to 0%.5")
+check(g.settings.runner_up_refits == 0, "no runner-up refits by default")
+t = good(); t.settings = {runner_up_refits = 4}; bad(t, "settings%.runner_up_refits = 4 is outside the allowed range %[0, 3%]")
+t = good(); t.settings = {runner_up_refits = 2}
+check(input.read(paddy.write_json(dir .. "/runner_up_input.json", t)).settings.runner_up_refits == 2, "runner-up refits as given")
 check(g.settings.measured_repeats == 0 and g.settings.resolution_factor == 0 and g.settings.strong_margin == nil
       and g.settings.backtracks == 2 and g.settings.converge == 0.01 and g.settings.start_scan == 4 and g.settings.refit == "surface"
       and g.settings.calibration_start == "surface" and g.settings.signature_baseline == "own", "defaults of the start scan, the calibration's start, the refit, step control, specimen scatter, resolution and strong margin")

@@ -150,7 +150,7 @@ function M.read(path)
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
-                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit", "refit_zoom", "refit_zoom_rounds", "ambiguous_refits",
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit", "refit_zoom", "refit_zoom_rounds", "ambiguous_refits", "runner_up_refits",
                    "calibration_start", "signature_baseline"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
@@ -208,6 +208,7 @@ function M.read(path)
     fail(path, string.format("settings.ambiguous_refits = %s: allowed true, false", tostring(s.ambiguous_refits)))
   end
   S.ambiguous_refits = s.ambiguous_refits ~= false
+  S.runner_up_refits = number(path, "settings.runner_up_refits", s.runner_up_refits or 0, 0, 3)
   S.refit = s.refit or "surface"
   if S.refit ~= "surface" and S.refit ~= "gauss_newton" then
     fail(path, string.format("settings.refit = '%s': allowed surface, gauss_newton", tostring(S.refit)))
