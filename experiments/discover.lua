@@ -264,12 +264,12 @@ local function fit(stage, start, dims, weights, valley)
     return pt
   end
   -- The quadratic response surface through the start scan's points (paddy.doe.response_surface):
-  -- ok, its result (or the error) and the number of points.
+  -- ok, its result (or the error), the number of points and the design (points, values, box).
   local function scan_surface()
     local X = {}
     for k, pt in ipairs(scan_pts) do X[k] = coords(pt) end
     local ok, rs = pcall(doe.response_surface, {points = X, values = scan_fs, measured = y, covariance = weights, lower = lo, upper = hi})
-    return ok, rs, #X
+    return ok, rs, #X, {points = X, values = scan_fs, lower = lo, upper = hi}
   end
   -- The calibration (no valley): Gauss-Newton starts at the best point of a quadratic response
   -- surface through the scan. At a few hundred spheres one seed's misfit is rough in θ: the
@@ -290,16 +290,14 @@ local function fit(stage, start, dims, weights, valley)
     end
   end
   if valley and S.refit == "surface" and scan_pts then
-    local ok, rs, npts = scan_surface()
+    local ok, rs, npts, design = scan_surface()
     if ok then
       local pt = at(rs.x)
       say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", npts, fmt_point(pt), rs.misfit_predicted)
-      local X = {}
-      for k, q in ipairs(scan_pts) do X[k] = coords(q) end
       return {point = pt, step = {se = rs.se}, history = history, scan = scan,
               surface = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
                          at_bound = rs.at_bound, points = npts},
-              design = {points = X, values = scan_fs, lower = lo, upper = hi}}
+              design = design}
     end
     say("   no response surface (%s): Gauss-Newton from the best scan point", tostring(rs))
   end

@@ -44,38 +44,31 @@ void fill(Simulation& sim, int mud) {
       }
   }
 }
+
+// The two blocks above, without gravity (mudAndSteelSprings), on `threads` threads.
+std::unique_ptr<Simulation> blocks(int threads) {
+  auto sim = std::make_unique<Simulation>(test::testPlugins());
+  fill(*sim, test::mudAndSteelSprings(*sim).first);
+  sim->setThreads(threads);
+  return sim;
+}
 }  // namespace
 
 TEST_CASE("the owners' split evens the threads' work where contacts are uneven", "[engine][threads]") {
-  Simulation sim(test::testPlugins());
-  const auto [mud, steel] = test::mudAndSteelSprings(sim);
-  (void)steel;
-  sim.setGravity(Vec3::Zero());
-  fill(sim, mud);
-  sim.setThreads(2);
-  sim.step(1);  // the list build and the initial pass split by slots, the step's pass by work
-  const auto after = sim.pairWorkPerThread();
-  CHECK(imbalance(after) < 1.15);
-  sim.step(5);
-  CHECK(imbalance(sim.pairWorkPerThread()) < 1.15);
+  auto sim = blocks(2);
+  sim->step(1);  // the list build and the initial pass split by slots, the step's pass by work
+  CHECK(imbalance(sim->pairWorkPerThread()) < 1.15);
+  sim->step(5);
+  CHECK(imbalance(sim->pairWorkPerThread()) < 1.15);
 
   // the same state split by slots: the first pass after a list build
-  Simulation fresh(test::testPlugins());
-  const auto [mud2, steel2] = test::mudAndSteelSprings(fresh);
-  (void)steel2;
-  fresh.setGravity(Vec3::Zero());
-  fill(fresh, mud2);
-  fresh.setThreads(2);
-  fresh.step(0);  // the initial pass only
-  CHECK(imbalance(fresh.pairWorkPerThread()) > 2.0);
+  auto fresh = blocks(2);
+  fresh->step(0);  // the initial pass only
+  CHECK(imbalance(fresh->pairWorkPerThread()) > 2.0);
 
-  Simulation one(test::testPlugins());
-  const auto [mud1, steel1] = test::mudAndSteelSprings(one);
-  (void)steel1;
-  one.setGravity(Vec3::Zero());
-  fill(one, mud1);
-  one.step(1);
-  CHECK(one.pairWorkPerThread().empty());
+  auto one = blocks(1);
+  one->step(1);
+  CHECK(one->pairWorkPerThread().empty());
 }
 
 // The split comes from the pass before, so a checkpoint carries it: a run resumed between two list

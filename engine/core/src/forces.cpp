@@ -192,9 +192,8 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     const bool by_cost = owner_bounds.size() == static_cast<std::size_t>(nt) + 1 && owner_bounds.back() == n;
     const std::size_t lo = by_cost ? owner_bounds[static_cast<std::size_t>(t)] : owner_split(t);
     const std::size_t hi = by_cost ? owner_bounds[static_cast<std::size_t>(t) + 1] : owner_split(t + 1);
-    const bool count = balance;
     std::uint64_t running = 0;
-    if (count) owner_bounds_used[static_cast<std::size_t>(t)] = lo;
+    if (balance) owner_bounds_used[static_cast<std::size_t>(t)] = lo;
     for (std::size_t i = lo; i < hi; ++i) {
       const Vec3 xi = p.position[i];
       const double ri = p.radius[i];
@@ -228,12 +227,12 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         b.n = m + 1;
         if (b.n == ContactBatch::kCapacity) flush(w, false);
       }
-      if (count) {
+      if (balance) {
         running += (list.start[i + 1] - list.start[i]) + kContactCost * in_range;
         owner_cost_sum[i] = running;
       }
     }
-    if (count) owner_thread_cost[static_cast<std::size_t>(t)] = running;
+    if (balance) owner_thread_cost[static_cast<std::size_t>(t)] = running;
     for (auto& w : tb.work) flush(w, false);
 
     // ---- particle–wall ----------------------------------------------------------------------
@@ -265,7 +264,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     // the sum skips (x + 0 = x), so the order and the result are those of adding every buffer.
     if (!dry) {
 #pragma omp barrier
-      if (count && t == 0) rebalanceOwners(n, nt);  // nothing reads the bounds until the next pass
+      if (balance && t == 0) rebalanceOwners(n, nt);  // nothing reads the bounds until the next pass
       if (direct) {
         for (std::size_t i = 0; i < n; ++i) p.force[i] += p.mass[i] * s.gravity_;
       } else {

@@ -168,20 +168,19 @@ function M.experiments(o)
     local name = string.format("tack_x%g", ts):gsub("%.", "_")
     local press = o.tack_press_speed or M.TACK_PRESS_SPEED
     if not (press > 0 and press <= 1) then error(string.format("discovery benchmark: tack_press_speed = %g: must be in (0, 1] m/s", press), 0) end
-    if (o.tack_speeds or "") == "" then
-      local v = o.tack_speed or M.TACK_SPEED
-      if not (v > 0 and v <= 1) then error(string.format("discovery benchmark: tack_speed = %g: must be in (0, 1] m/s", v), 0) end
-      exps[#exps + 1] = {name = name, script = "tack.lua", set = M.tack_set(ts, v, press), observables = M.TACK_OBSERVABLES}
-    else
-      -- one tack test per pull speed: a viscous pull grows with the speed, a static one does not
-      local speeds = util.numbers(o.tack_speeds, "tack_speeds")
-      for _, v in ipairs(speeds) do
-        if not (v > 0 and v <= 1) then error(string.format("discovery benchmark: tack_speeds = %s: each speed must be in (0, 1] m/s", o.tack_speeds), 0) end
+    -- one tack test per pull speed (a viscous pull grows with the speed, a static one does not);
+    -- one speed keeps the plain name
+    local single = (o.tack_speeds or "") == ""
+    local speeds = single and {o.tack_speed or M.TACK_SPEED} or util.numbers(o.tack_speeds, "tack_speeds")
+    for _, v in ipairs(speeds) do
+      if not (v > 0 and v <= 1) then
+        error(single and string.format("discovery benchmark: tack_speed = %g: must be in (0, 1] m/s", v)
+              or string.format("discovery benchmark: tack_speeds = %s: each speed must be in (0, 1] m/s", o.tack_speeds), 0)
       end
-      for _, v in ipairs(speeds) do
-        exps[#exps + 1] = {name = string.format("%s_%dmm_per_s", name, math.floor(v * 1000 + 0.5)), script = "tack.lua",
-                           set = M.tack_set(ts, v, press), observables = M.TACK_OBSERVABLES}
-      end
+    end
+    for _, v in ipairs(speeds) do
+      exps[#exps + 1] = {name = single and name or string.format("%s_%dmm_per_s", name, math.floor(v * 1000 + 0.5)), script = "tack.lua",
+                         set = M.tack_set(ts, v, press), observables = M.TACK_OBSERVABLES}
     end
   end
   return exps
