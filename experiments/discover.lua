@@ -214,8 +214,11 @@ local function scan_start(stage, start, weights, dims, valley)
   if valley then
     local ld = dims[#dims]
     local function clip(v, d) return math.min(d.hi, math.max(d.lo, v)) end
-    for k = 0, n do
-      local lam = valley.lambda + k / n * (ld.hi - valley.lambda)
+    -- A linear estimate at or beyond the top of the range (valley.whole_range) is no guide: the
+    -- valley's points then run over the whole range, low + k/n·(high − low), k = 1…n.
+    local from = valley.whole_range and ld.lo or valley.lambda
+    for k = valley.whole_range and 1 or 0, n do
+      local lam = from + k / n * (ld.hi - from)
       for side = 0, (k > 0 and 1 or 0) do
         local q = ld.set(copy_point(start), lam)
         for j, d in ipairs(theta_only) do
@@ -529,8 +532,14 @@ local function refit_effect(named, tentative)
   local zeros = {}
   for j = 1, p do zeros[j] = 0 end
   local beta = doe.gauss_newton{theta = zeros, residual = signatures[named], jacobian = J, covariance = cov, damping = 0}.step
+  -- A linear estimate at or above the top of the range says the response is not linear in the
+  -- strength (strong wall adhesion lifts a whole layer of mud with the tack plate: the carried
+  -- mass rises in a step once the adhesion exceeds about 1.4 times the mud's own surface energy,
+  -- then saturates), so it is no guide to where the strength lies: the valley spans the whole range.
+  local whole_range = est ~= nil and est.strength ~= nil and est.strength >= c.high
+  if whole_range then say("   linear estimate %.4g at or above the range's top %.4g: the valley spans the whole range", est.strength, c.high) end
   local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov,
-                   {theta = theta, beta = beta, lambda = lam})
+                   {theta = theta, beta = beta, lambda = lam, whole_range = whole_range})
   local joint = {theta = best.point.theta, lambda = best.point.lambda[named], iterations = best.history, scan = best.scan,
                  surface = best.surface, method = best.surface and "surface" or "gauss_newton"}
   -- The joint point assessed at the confirmation seeds: the misfit left, the seed scatter after,

@@ -15,14 +15,24 @@
 
 namespace paddy::fuzz {
 
-// A per-process scratch directory (libFuzzer may run several processes side by side).
+// A per-process scratch directory (libFuzzer may run several processes side by side), removed
+// with everything in it when the process exits.
+struct ScratchDir {
+  std::filesystem::path path;
+  ScratchDir() : path(std::filesystem::temp_directory_path() / ("paddy_fuzz_" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ignored;
+    std::filesystem::remove_all(path, ignored);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+};
+
 inline const std::filesystem::path& scratchDir() {
-  static const std::filesystem::path dir = [] {
-    auto d = std::filesystem::temp_directory_path() / ("paddy_fuzz_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(d);
-    return d;
-  }();
-  return dir;
+  static const ScratchDir dir;
+  return dir.path;
 }
 
 inline std::string writeInput(const std::string& name, const std::uint8_t* data, std::size_t size) {
