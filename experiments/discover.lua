@@ -27,6 +27,7 @@ local jobs = require("lib.calibration.jobs")
 local input_file = require("lib.discovery.input")
 local stack = require("lib.discovery.stack")
 local zoom = require("lib.discovery.zoom")
+local valley_design = require("lib.discovery.valley")
 local report = require("lib.discovery.report")
 
 local P = paddy.parameters{
@@ -187,9 +188,8 @@ local outcome = {input = input, parameters = P, layout = L, measured = y, fixed 
 -- follow the valley along which the free parameters absorb the effect (`valley`): the
 -- calibration moved θ by β·λ to absorb an effect of strength λ, with β = (JᵀΣ⁻¹J)⁻¹JᵀΣ⁻¹g the
 -- least-squares fit of the effect's signature g by the free parameters' Jacobian J, so the truth
--- lies near θ(λ) = θ̂ − β·λ. Point k = 0…n puts λ at λ̂ + k/n·(high − λ̂) and θ at θ(λ) (clipped
--- to the box); points k = 1…n add to θ half a stratum (1/(2n) of each range), alternately up and
--- down, for the curvature of the valley. The score test's strength λ̂ is linear in the effect and
+-- lies near θ(λ) = θ̂ − β·λ (the points: lib/discovery/valley.lua; λ from λ̂ up to the range's top,
+-- over the whole range when λ̂ is at or above it). The score test's strength λ̂ is linear in the effect and
 -- a strong one (wall adhesion that lifts the mud with the cone) is underestimated by far, so the
 -- refit must not start only at it; nor at a strength paired with a θ that has absorbed none of it.
 -- Returns the best point and the scan's record.
@@ -213,21 +213,15 @@ local function scan_start(stage, start, weights, dims, valley)
   end
   if valley then
     local ld = dims[#dims]
-    local function clip(v, d) return math.min(d.hi, math.max(d.lo, v)) end
-    -- A linear estimate at or beyond the top of the range (valley.whole_range) is no guide: the
-    -- valley's points then run over the whole range, low + k/n·(high − low), k = 1…n.
-    local from = valley.whole_range and ld.lo or valley.lambda
-    for k = valley.whole_range and 1 or 0, n do
-      local lam = from + k / n * (ld.hi - from)
-      for side = 0, (k > 0 and 1 or 0) do
-        local q = ld.set(copy_point(start), lam)
-        for j, d in ipairs(theta_only) do
-          local offset = side == 1 and (k % 2 == 1 and 1 or -1) * (d.hi - d.lo) / (2 * n) or 0
-          q = d.set(q, clip(valley.theta[j] - valley.beta[j] * lam + offset, d))
-        end
-        q.label = stage .. " scan " .. #pts
-        pts[#pts + 1] = q
-      end
+    local tlo, thi = {}, {}
+    for j, d in ipairs(theta_only) do tlo[j], thi[j] = d.lo, d.hi end
+    for _, v in ipairs(valley_design.points{theta = valley.theta, beta = valley.beta, lambda = valley.lambda, n = n,
+                                            whole_range = valley.whole_range, theta_low = tlo, theta_high = thi,
+                                            lambda_low = ld.lo, lambda_high = ld.hi}) do
+      local q = ld.set(copy_point(start), v.lambda)
+      for j, d in ipairs(theta_only) do q = d.set(q, v.theta[j]) end
+      q.label = stage .. " scan " .. #pts
+      pts[#pts + 1] = q
     end
   end
   local fs = evaluate(stage, pts)
@@ -536,7 +530,7 @@ local function refit_effect(named, tentative)
   -- strength (strong wall adhesion lifts a whole layer of mud with the tack plate: the carried
   -- mass rises in a step once the adhesion exceeds about 1.4 times the mud's own surface energy,
   -- then saturates), so it is no guide to where the strength lies: the valley spans the whole range.
-  local whole_range = est ~= nil and est.strength ~= nil and est.strength >= c.high
+  local whole_range = valley_design.whole_range(est and est.strength, c.high)
   if whole_range then say("   linear estimate %.4g at or above the range's top %.4g: the valley spans the whole range", est.strength, c.high) end
   local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov,
                    {theta = theta, beta = beta, lambda = lam, whole_range = whole_range})

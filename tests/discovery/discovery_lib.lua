@@ -240,6 +240,34 @@ local okz, ez = pcall(zoom.design, {0.5}, {0}, {0.3}, 0.15)
 check(not okz and ez:match("centre 0.5 lies outside"), "a centre outside its range is refused: %s", tostring(ez))
 check(not pcall(zoom.design, {0.1}, {0}, {0.3}, 0), "a zero half-width is refused")
 
+-- The refit's valley: θ on the line θ̂ − β·λ (and its half-stratum twins), λ from λ̂ up to the top;
+-- over the whole range when the linear estimate is at or above the top.
+local valley = require("lib.discovery.valley")
+check(valley.whole_range(0.654, 0.3) and valley.whole_range(0.3, 0.3) and not valley.whole_range(0.26, 0.3)
+      and not valley.whole_range(nil, 0.3), "whole range when the estimate is at or above the top")
+local vbase = {theta = {0.14}, beta = {0.1}, theta_low = {0.05}, theta_high = {0.3}, lambda_low = 0, lambda_high = 0.3, n = 5}
+local function with(t, extra) local c = {}; for k, v in pairs(t) do c[k] = v end; for k, v in pairs(extra) do c[k] = v end; return c end
+local vp = valley.points(with(vbase, {lambda = 0.2}))
+check(#vp == 11 and vp[1].lambda == 0.2 and near(vp[1].theta[1], 0.14 - 0.1 * 0.2, 1e-15), "λ̂ first, on the line: %d points", #vp)
+for i = 2, #vp, 2 do
+  local k = i // 2
+  local lam = 0.2 + k / 5 * 0.1
+  check(near(vp[i].lambda, lam, 1e-15) and vp[i + 1].lambda == vp[i].lambda, "point %d: λ = %.4g, expected %.4g", i, vp[i].lambda, lam)
+  check(near(vp[i].theta[1], 0.14 - 0.1 * lam, 1e-15), "point %d on the line", i)
+  local twin = 0.14 - 0.1 * lam + (k % 2 == 1 and 1 or -1) * 0.25 / 10
+  check(near(vp[i + 1].theta[1], twin, 1e-15), "twin %d half a stratum %s: %.6g, expected %.6g", i + 1, k % 2 == 1 and "up" or "down", vp[i + 1].theta[1], twin)
+end
+local vw = valley.points(with(vbase, {lambda = 0.3, whole_range = true}))
+check(#vw == 10, "whole range: n points and their twins, %d", #vw)
+local lams = {}
+for i = 1, #vw, 2 do lams[#lams + 1] = vw[i].lambda end
+for k = 1, 5 do check(near(lams[k], 0.3 * k / 5, 1e-15), "whole range: λ_%d = %.4g, expected %.4g", k, lams[k], 0.3 * k / 5) end
+check(lams[1] < 0.3 / 2, "whole range: strengths well below the linear estimate are tried")
+local vc = valley.points(with(vbase, {lambda = 0.2, beta = {-2}}))
+for _, q in ipairs(vc) do check(q.theta[1] <= 0.3 and q.theta[1] >= 0.05, "θ clipped to its box: %.4g", q.theta[1]) end
+check(not pcall(valley.points, with(vbase, {lambda = 0.2, n = 0})), "n = 0 is refused")
+check(not pcall(valley.points, with(vbase, {lambda = 0.2, lambda_low = 0.3})), "an empty strength range is refused")
+
 -- The benchmark's vane read as one specimen: its torques share the fill's error.
 local bench = require("lib.discovery.benchmark")
 local ve = bench.experiments{variant = "small", vane_scale = 4, vane_speeds = "10,40,160", vane_shared_sd = 0.05, vane_startup_rpm = 10}
