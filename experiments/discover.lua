@@ -28,6 +28,7 @@ local input_file = require("lib.discovery.input")
 local stack = require("lib.discovery.stack")
 local zoom = require("lib.discovery.zoom")
 local valley_design = require("lib.discovery.valley")
+local resolution = require("lib.discovery.resolution")
 local report = require("lib.discovery.report")
 
 local P = paddy.parameters{
@@ -291,7 +292,7 @@ local function fit(stage, start, dims, weights, valley)
     if ok then
       local pt = at(rs.x)
       say("   response surface through %d scan point(s): best %s, predicted RMS residual %.3g", npts, fmt_point(pt), rs.misfit_predicted)
-      return {point = pt, step = {se = rs.se}, history = history, scan = scan,
+      return {point = pt, step = {se = rs.se, jacobian = rs.jacobian}, history = history, scan = scan,
               surface = {x = rs.x, se = rs.se, misfit_predicted = rs.misfit_predicted, residual_sd = rs.residual_sd,
                          at_bound = rs.at_bound, points = npts},
               design = design}
@@ -570,11 +571,12 @@ local function refit_effect(named, tentative)
     -- (the shift a finer model makes depends on the model: wall adhesion acts through the spheres
     -- that touch the cone, whose number per area the sphere size sets). It replaces step 2's
     -- nuisance column in the diagnosis after.
-    local J_after, resolution_after = J_diag, nil
+    local J_after, resolution_after, b_after = J_diag, nil, nil
     if S.resolution_factor > 0 then
       local b
       b, J_after = resolution_shift("resolution after", joint.theta, {[named] = joint.lambda}, f_after)
       resolution_after = {diameter = d_fine, seeds = S.resolution_seeds, rms = stack.rms_standardised(b, noise_after.covariance)}
+      b_after = b
       say("   resolution shift at the refit point: RMS %.3g noise sd", resolution_after.rms)
     end
     local rest = {}
@@ -612,6 +614,19 @@ local function refit_effect(named, tentative)
     end
     say("   %s = %.4g [%.4g, %.4g]; RMS standardised residual %.3g -> %.3g", named, after.strength.value, after.strength.low,
         after.strength.high, outcome.located.rms, after.rms)
+    if b_after and last.jacobian then
+      -- The strength extrapolated to the resolution runs' diameter (lib/discovery/resolution.lua).
+      local devs = {}
+      for k, x in ipairs(conf) do devs[k] = stack.minus(x, f_after) end
+      local rc = resolution.corrected{jacobian = last.jacobian, shift = b_after, deviations = devs, weights = cov, lambda = joint.lambda,
+                                      se = se, low = c.low, high = c.high, resolution_seeds = S.resolution_seeds}
+      if rc then
+        rc.diameter = d_fine
+        after.strength.resolution_corrected = rc
+        say("   at %.4g m (the resolution runs): %s = %.4g [%.4g, %.4g] (shift %+.3g +- %.3g)", d_fine, named, rc.value, rc.low, rc.high,
+            rc.shift, rc.se_shift)
+      end
+    end
     local z = {}
     for i = 1, m do z[i] = r1[i] / math.sqrt(noise_after.covariance[i][i]) end
     after.z = z
@@ -619,6 +634,7 @@ local function refit_effect(named, tentative)
   end
   local first = best.step or {}
   first.design = best.design
+  first.jacobian = first.jacobian or best.J
   local after = assess(joint, first)
   -- Zoom: when the misfit left at the confirmation seeds is significant, a second response surface
   -- in a box of +-refit_zoom of each range around the refit point (a central composite design:
@@ -654,7 +670,7 @@ local function refit_effect(named, tentative)
                               at_bound = rs.at_bound, points = #X, half_width = h, round = round,
                               from = {theta = joint.theta, lambda = joint.lambda}}}
       say("   zoomed surface: best %s, predicted RMS residual %.3g", fmt_point(pt), rs.misfit_predicted)
-      local zafter = assess(zjoint, {se = rs.se, design = {points = X, values = zfs, lower = zlo, upper = zhi}})
+      local zafter = assess(zjoint, {se = rs.se, jacobian = rs.jacobian, design = {points = X, values = zfs, lower = zlo, upper = zhi}})
       zjoint.zoom.kept = zafter.rms < after.rms
       say("   zoomed point: RMS standardised residual %.3g against %.3g at the point it zoomed from: %s", zafter.rms, after.rms,
           zjoint.zoom.kept and "kept" or "not kept")

@@ -268,6 +268,42 @@ for _, q in ipairs(vc) do check(q.theta[1] <= 0.3 and q.theta[1] >= 0.05, "θ cl
 check(not pcall(valley.points, with(vbase, {lambda = 0.2, n = 0})), "n = 0 is refused")
 check(not pcall(valley.points, with(vbase, {lambda = 0.2, lambda_low = 0.3})), "an empty strength range is refused")
 
+-- The strength extrapolated to a finer model: Δ = −(GᵀWG)⁻¹GᵀW b. On a linear model b = G δ the
+-- shift is −δ_λ exactly, a part of b that G cannot express (orthogonal in W) moves nothing, and
+-- the seed noise of the shift follows from deviations d_k = G e_k in closed form.
+local resolution = require("lib.discovery.resolution")
+do
+  local G = {{1, 0.5}, {0, 1}, {2, -1}, {1, 1}, {0.5, 0}, {-1, 2}}
+  local W = {}
+  for i = 1, 6 do W[i] = {}; for j = 1, 6 do W[i][j] = i == j and 1 or 0 end end
+  local function Gx(x) local v = {}; for i = 1, 6 do v[i] = G[i][1] * x[1] + G[i][2] * x[2] end; return v end
+  -- o: orthogonal to both columns of G (Gᵀo = 0).
+  local o = {2, -1, 0, 0, -4, 0}
+  local go1, go2 = 0, 0
+  for i = 1, 6 do go1, go2 = go1 + G[i][1] * o[i], go2 + G[i][2] * o[i] end
+  check(go1 == 0 and go2 == 0, "the test's orthogonal vector: %g %g", go1, go2)
+  local b = Gx({0.01, -0.02})
+  for i = 1, 6 do b[i] = b[i] + 3 * o[i] end
+  local e = {{0.001, 0.004}, {-0.002, -0.001}, {0.0005, -0.003}}
+  local devs = {Gx(e[1]), Gx(e[2]), Gx(e[3])}
+  local rc = resolution.corrected{jacobian = G, shift = b, deviations = devs, weights = W, lambda = 0.1, se = 0.003,
+                                  low = 0, high = 0.3, resolution_seeds = 2}
+  check(near(rc.shift, 0.02, 1e-12) and near(rc.value, 0.12, 1e-12) and not rc.clipped, "shift %.15g, value %.15g", rc.shift, rc.value)
+  local ss = 0.004 ^ 2 + 0.001 ^ 2 + 0.003 ^ 2
+  local se_shift = math.sqrt(ss / 2 * (1 / 2 + 1 / 3))
+  check(near(rc.se_shift, se_shift, 1e-12), "se_shift %.15g, expected %.15g", rc.se_shift, se_shift)
+  check(near(rc.se, math.sqrt(0.003 ^ 2 + se_shift ^ 2), 1e-12) and near(rc.low, 0.12 - 1.96 * rc.se, 1e-12), "se and interval")
+  local top = resolution.corrected{jacobian = G, shift = b, deviations = devs, weights = W, lambda = 0.29, se = 0.003,
+                                   low = 0, high = 0.3, resolution_seeds = 2}
+  check(top.value == 0.3 and top.clipped and top.high == 0.3, "clipped to the range's top: %.6g", top.value)
+  check(resolution.corrected{jacobian = G, shift = b, deviations = {devs[1]}, weights = W, lambda = 0.1, se = 0.003,
+                             low = 0, high = 0.3, resolution_seeds = 2} == nil, "one confirmation run: no correction")
+  local Gd = {}
+  for i = 1, 6 do Gd[i] = {G[i][1], 2 * G[i][1]} end
+  check(resolution.corrected{jacobian = Gd, shift = b, deviations = devs, weights = W, lambda = 0.1, se = 0.003,
+                             low = 0, high = 0.3, resolution_seeds = 2} == nil, "a rank-deficient Jacobian: no correction")
+end
+
 -- The benchmark's vane read as one specimen: its torques share the fill's error.
 local bench = require("lib.discovery.benchmark")
 local ve = bench.experiments{variant = "small", vane_scale = 4, vane_speeds = "10,40,160", vane_shared_sd = 0.05, vane_startup_rpm = 10}

@@ -202,6 +202,11 @@ figcaption{font-size:0.9em;color:#555;max-width:560px}</style></head><body>]])
                  a and a.diagnosis and string.format("%s (%s, %s)", num(a.diagnosis.q0), num(a.diagnosis.q0_df), pval(a.diagnosis.q0_p)) or "–"}}
   if a then
     rows[#rows + 1] = {"strength of " .. esc(d.named), "0", string.format("%s [%s, %s]", num(a.strength.value), num(a.strength.low), num(a.strength.high))}
+    local rc = a.strength.resolution_corrected
+    if rc then
+      rows[#rows + 1] = {string.format("strength extrapolated to %s mm spheres", num(rc.diameter * 1000)), "",
+                         string.format("%s [%s, %s] (shift %s ± %s)", num(rc.value), num(rc.low), num(rc.high), num(rc.shift), num(rc.se_shift))}
+    end
     if a.comparison then
       rows[#rows + 1] = {"likelihood ratio (p), ΔBIC", "", string.format("%s (%s), %s", num(a.comparison.lr), pval(a.comparison.p), num(a.comparison.delta_bic))}
     end
