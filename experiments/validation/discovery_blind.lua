@@ -327,6 +327,13 @@ summary.truth_simulations_per_trial = #experiments * R
 summary.truth_repeats = R
 paddy.write_json("blind_summary.json", {summary = summary, trials = scored})
 say("correct names %d/%d, false alarms %d/%d", summary.correct_names, summary.effect_trials, summary.false_alarms, summary.null_trials)
+if summary.strength_interval_coverage then
+  local rc = summary.strength_resolution_corrected
+  say("named strengths: intervals cover the truth %d/%d%s; misfit after at most 1.2 noise sd %d/%d",
+      summary.strength_interval_coverage.covered, summary.strength_interval_coverage.trials,
+      rc and string.format(" (extrapolated to the finer model %d/%d)", rc.covered, rc.trials) or "",
+      summary.misfit_after_named and summary.misfit_after_named.at_most_1_2 or 0, summary.misfit_after_named and summary.misfit_after_named.stats.n or 0)
+end
 do
   local bd = summary.by_detection
   say("declared detectable: %d/%d named; below the stated limit: %d/%d named; answers none with the upper limit above the truth: %d/%d",
