@@ -257,6 +257,25 @@ check(#zoom.design({1, 2, 3}, {0, 0, 0}, {4, 4, 4}, 0.1) == 1 + 6 + 8, "three di
 local okz, ez = pcall(zoom.design, {0.5}, {0}, {0.3}, 0.15)
 check(not okz and ez:match("centre 0.5 lies outside"), "a centre outside its range is refused: %s", tostring(ez))
 check(not pcall(zoom.design, {0.1}, {0}, {0.3}, 0), "a zero half-width is refused")
+-- A centre on a bound (a refit that ran into it): the box reaches 2h inward and that dimension
+-- gets three levels, so the quadratic surface is determined (with the plain box it has two and
+-- paddy.doe.response_surface refuses the design as rank-deficient).
+do
+  local Xb, blo, bhi = zoom.design({0.3, 0.05}, {0.05, 0}, {0.3, 0.1}, 0.15)
+  check(#Xb == 9 and near(blo[1], 0.225, 1e-15) and bhi[1] == 0.3 and near(blo[2], 0.035, 1e-15) and near(bhi[2], 0.065, 1e-15),
+        "box at the upper bound: [%.6g, %.6g] x [%.6g, %.6g]", blo[1], bhi[1], blo[2], bhi[2])
+  check(near(Xb[2][1], 0.225, 1e-15) and near(Xb[3][1], 0.2625, 1e-15) and Xb[2][2] == 0.05, "axial points at the far side and half-way")
+  local levels = {}
+  for _, x in ipairs(Xb) do levels[string.format("%.6g", x[1])] = true end
+  check(levels["0.225"] and levels["0.2625"] and levels["0.3"], "three levels of the bounded dimension")
+  local Xl = zoom.design({0.05, 0.0}, {0.05, 0}, {0.3, 0.1}, 0.15)
+  check(near(Xl[2][1], 0.05 + 0.0375, 1e-15) and near(Xl[3][1], 0.125, 1e-15) and near(Xl[4][2], 0.015, 1e-15) and near(Xl[5][2], 0.03, 1e-15),
+        "centre on both lower bounds: axial points half-way and at the far side")
+  local values = {}
+  for k, x in ipairs(Xb) do values[k] = {100 * (x[1] - 0.26) ^ 2 + 100 * (x[2] - 0.045) ^ 2 + 1, 10 * (x[1] - 0.26) + 5 * (x[2] - 0.045)} end
+  local rs = require("paddy.doe").response_surface{points = Xb, values = values, measured = {1, 0}, covariance = {{1, 0}, {0, 1}}, lower = blo, upper = bhi}
+  check(near(rs.x[1], 0.26, 1e-6) and near(rs.x[2], 0.045, 1e-6), "the surface through the bounded zoom finds the minimum: %.6g %.6g", rs.x[1], rs.x[2])
+end
 
 -- The refit's valley: θ on the line θ̂ − β·λ (and its half-stratum twins), λ from λ̂ up to the top;
 -- over the whole range when the linear estimate is at or above the top.

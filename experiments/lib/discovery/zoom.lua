@@ -6,7 +6,10 @@
 -- conditions", J. R. Stat. Soc. B 13, 1951; face-centred variant). Not paddy.doe.design's CCF:
 -- that one is centred on its box, while here the centre and the axial points stay at the refit
 -- point when the box is clipped by a range (a strength near the top of its range), so the point
--- the zoom starts from is always run.
+-- the zoom starts from is always run. A centre on a bound of its range (a refit that ran into the
+-- bound) would leave that dimension two levels (its axial point on the bound is the centre), too
+-- few for its quadratic term: there the box reaches 2h of the range inward, and the axial points
+-- lie at its far side and half-way, so the dimension has three levels (bound, half-way, far side).
 --
 --   local zoom = require("lib.discovery.zoom")
 --   local X, lo, hi = zoom.design({0.2, 0.05}, {0, 0}, {0.3, 0.1}, 0.15)
@@ -17,18 +20,27 @@ local M = {}
 function M.design(x0, lower, upper, h)
   local d = #x0
   if not (h > 0 and h <= 0.5) then error(string.format("zoom: half-width %g must be in (0, 0.5]", h), 0) end
-  local lo, hi = {}, {}
+  local lo, hi, axial = {}, {}, {}
   for j = 1, d do
     if not (upper[j] > lower[j]) then error(string.format("zoom: range %d is empty [%g, %g]", j, lower[j], upper[j]), 0) end
     if x0[j] < lower[j] or x0[j] > upper[j] then error(string.format("zoom: centre %g lies outside [%g, %g]", x0[j], lower[j], upper[j]), 0) end
     local w = h * (upper[j] - lower[j])
     lo[j], hi[j] = math.max(lower[j], x0[j] - w), math.min(upper[j], x0[j] + w)
+    if x0[j] == upper[j] then
+      lo[j] = math.max(lower[j], x0[j] - 2 * w)
+      axial[j] = {lo[j], 0.5 * (lo[j] + x0[j])}
+    elseif x0[j] == lower[j] then
+      hi[j] = math.min(upper[j], x0[j] + 2 * w)
+      axial[j] = {0.5 * (x0[j] + hi[j]), hi[j]}
+    else
+      axial[j] = {lo[j], hi[j]}
+    end
   end
   local X = {{table.unpack(x0)}}
   for j = 1, d do
-    for _, side in ipairs({lo, hi}) do
+    for _, v in ipairs(axial[j]) do
       local x = {table.unpack(x0)}
-      x[j] = side[j]
+      x[j] = v
       X[#X + 1] = x
     end
   end
