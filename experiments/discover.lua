@@ -649,7 +649,10 @@ local function refit_effect(named, tentative)
     if not (after.diagnosis and after.diagnosis.q0_significant) then break end
     local h = S.refit_zoom
     local x0, lower, upper = {}, {}, {}
-    for j, d in ipairs(dims) do x0[j], lower[j], upper[j] = j <= p and joint.theta[j] or joint.lambda, d.lo, d.hi end
+    -- The centre clamped to the ranges: a surface's optimum on a bound can lie a rounding error outside it.
+    for j, d in ipairs(dims) do
+      x0[j], lower[j], upper[j] = math.min(d.hi, math.max(d.lo, j <= p and joint.theta[j] or joint.lambda)), d.lo, d.hi
+    end
     local X, zlo, zhi = zoom.design(x0, lower, upper, h)
     local base = {theta = joint.theta, lambda = {[named] = joint.lambda}, seed = seed0}
     local function at(x)
