@@ -160,3 +160,30 @@ TEST_CASE("lua: warning for threads on busy cores", "[lua][threads]") {
   CHECK(now->cpus >= 1);
   CHECK(now->load1 >= 0.0);
 }
+
+TEST_CASE("lua: a script in a subdirectory of an experiments tree loads that tree's libraries first", "[lua]") {
+  // tree/lib/probe.lua and installed/lib/probe.lua say where they are; tree/validation/script.lua
+  // must get the tree's, and a script beside the installed tree's root the installed one's.
+  const fs::path dir = workDir("own_tree");
+  for (const auto& [where, tag] : {std::pair<std::string, std::string>{"tree", "tree"}, {"installed", "installed"}}) {
+    fs::create_directories(dir / where / "lib");
+    std::ofstream(dir / where / "lib" / "probe.lua") << "return '" << tag << "'\n";
+  }
+  fs::create_directories(dir / "tree" / "validation");
+  std::ofstream(dir / "tree" / "validation" / "script.lua") << "paddy.result{from = require('lib.probe')}\n";
+  fs::create_directories(dir / "loose");
+  std::ofstream(dir / "loose" / "script.lua") << "paddy.result{from = require('lib.probe')}\n";
+  auto runFrom = [&](const fs::path& script, const std::string& out) {
+    ScriptOptions o;
+    o.script = script.string();
+    o.out_dir = (dir / out).string();
+    o.experiments_dir = (dir / "installed").string();
+    o.threads = 1;
+    std::ostringstream sout, serr;
+    REQUIRE(paddy::lua::runScript(o, sout, serr) == 0);
+    std::ifstream in(dir / out / "result.json");
+    return nlohmann::json::parse(in)["results"]["from"].get<std::string>();
+  };
+  CHECK(runFrom(dir / "tree" / "validation" / "script.lua", "out_tree") == "tree");
+  CHECK(runFrom(dir / "loose" / "script.lua", "out_loose") == "installed");
+}

@@ -46,13 +46,40 @@ int messageHandler(lua_State* L) {
   return 1;
 }
 
+// Whether dir/lib holds Lua modules (an experiments tree's root).
+bool hasLuaLib(const fs::path& dir) {
+  std::error_code ec;
+  const fs::path lib = dir / "lib";
+  if (!fs::is_directory(lib, ec)) return false;
+  for (const auto& e : fs::directory_iterator(lib, ec)) {
+    if (e.path().extension() == ".lua") return true;
+  }
+  return false;
+}
+
+// The root of the experiments tree a script belongs to, when the script sits in a subdirectory
+// of it (validation/, calibration/): the nearest ancestor, at most three levels up, whose lib/
+// holds Lua modules; empty when the script's own directory is such a root or none is found. A
+// script in a copied tree then loads that tree's libraries before the installed ones.
+fs::path ownTreeRoot(const fs::path& script_dir) {
+  if (hasLuaLib(script_dir)) return {};
+  fs::path p = script_dir;
+  for (int level = 0; level < 3 && p.has_parent_path() && p.parent_path() != p; ++level) {
+    p = p.parent_path();
+    if (hasLuaLib(p)) return p;
+  }
+  return {};
+}
+
 void setPackagePath(lua_State* L, const RuntimeState& st) {
   std::string prefix;
   auto add = [&prefix](const fs::path& dir) {
     const std::string d = dir.empty() ? std::string(".") : dir.string();
     prefix += d + "/?.lua;" + d + "/?/init.lua;";
   };
-  add(fs::absolute(st.script).parent_path());
+  const fs::path script_dir = fs::absolute(st.script).parent_path();
+  add(script_dir);
+  if (const fs::path root = ownTreeRoot(script_dir); !root.empty()) add(root);
   if (!st.options.experiments_dir.empty()) add(st.options.experiments_dir);
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "path");
