@@ -529,8 +529,9 @@ local function refit_effect(named, tentative)
   local beta = doe.gauss_newton{theta = zeros, residual = signatures[named], jacobian = J, covariance = cov, damping = 0}.step
   -- A linear estimate at or above the top of the range says the response is not linear in the
   -- strength (strong wall adhesion lifts a whole layer of mud with the tack plate: the carried
-  -- mass rises in a step once the adhesion exceeds about 1.4 times the mud's own surface energy,
-  -- then saturates), so it is no guide to where the strength lies: the valley spans the whole range.
+  -- mass rises in a step once the adhesion exceeds the mud's own surface energy by a margin — at
+  -- γ = 0.10 J/m² between 0.15 and 0.20 J/m² — then saturates; docs/results/tack_wall_adhesion_threshold.csv),
+  -- so it is no guide to where the strength lies: the valley spans the whole range.
   local whole_range = valley_design.whole_range(est and est.strength, c.high)
   if whole_range then say("   linear estimate %.4g at or above the range's top %.4g: the valley spans the whole range", est.strength, c.high) end
   local best = fit("recalibration", {theta = theta, lambda = {[named] = lam}, seed = seed0}, dims, cov,
