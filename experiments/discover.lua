@@ -637,7 +637,8 @@ local function refit_effect(named, tentative)
   first.design = best.design
   first.jacobian = first.jacobian or best.J
   local after = assess(joint, first)
-  -- Zoom: when the misfit left at the confirmation seeds is significant, a second response surface
+  -- Zoom: when the misfit left at the confirmation seeds is significant (or its RMS above
+  -- refit_zoom_above noise sd: lib/discovery/zoom.lua, M.reason), a second response surface
   -- in a box of +-refit_zoom of each range around the refit point (a central composite design:
   -- centre, 2 axial points per dimension, every corner; clipped to the ranges), and its optimum
   -- assessed at the same confirmation seeds; the point that leaves the smaller misfit is kept, and
@@ -647,7 +648,8 @@ local function refit_effect(named, tentative)
   -- around the optimum fits it.
   local zooms = {}
   for round = 1, S.refit_zoom > 0 and S.refit_zoom_rounds or 0 do
-    if not (after.diagnosis and after.diagnosis.q0_significant) then break end
+    local why = zoom.reason(after.diagnosis and after.diagnosis.q0_significant, after.rms, S.refit_zoom_above)
+    if not why then break end
     local h = S.refit_zoom
     local x0, lower, upper = {}, {}, {}
     -- The centre clamped to the ranges: a surface's optimum on a bound can lie a rounding error outside it.
@@ -663,7 +665,7 @@ local function refit_effect(named, tentative)
     end
     local zpts = {}
     for k, x in ipairs(X) do zpts[k] = at(x); zpts[k].label = string.format("recalibration zoom %d.%d", round, k - 1) end
-    say("   misfit left significant: zoom %d, %d point(s) within +-%.3g of each range around the refit point", round, #zpts, h)
+    say("   %s: zoom %d, %d point(s) within +-%.3g of each range around the refit point", why, round, #zpts, h)
     local zfs = evaluate("recalibration zoom", zpts)
     local ok, rs = pcall(doe.response_surface, {points = X, values = zfs, measured = y, covariance = cov, lower = zlo, upper = zhi})
     if ok then

@@ -56,6 +56,8 @@ local P = paddy.parameters{
    description = "each candidate's probe strength as a fraction of its range (its input key 'probe'): a signature's seed noise does not grow with the probe, its signal does"},
   {name = "refit_zoom", default = 0.15, min = 0, max = 0.5,
    description = "the workflow's settings.refit_zoom: a second response surface around the refit point when the misfit it leaves is significant (0 = none, as the runs measured before it)"},
+  {name = "refit_zoom_above", default = 1.2, min = 0, max = 10,
+   description = "the workflow's settings.refit_zoom_above: zoom also while the refit's RMS standardised residual is above this many noise sd, significant or not (0 = only when significant, as the runs measured before it)"},
   {name = "only_trials", default = "", description = "comma-separated trial numbers to run of the drawn sequence ('' = all): re-run chosen trials with other settings"},
   {name = "first_trial", default = 1, type = "integer", min = 1, max = 100000, description = "number of the first trial (trial seeds follow from it)"},
   {name = "workflow", default = "", description = "workflow script ('' = experiments/discover.lua)"},
@@ -94,6 +96,7 @@ if P.signature_seeds > 0 then settings.signature_seeds = P.signature_seeds end
 if P.confirm_seeds > 0 then settings.confirm_seeds = P.confirm_seeds end
 if P.runner_up_refits > 0 then settings.runner_up_refits = P.runner_up_refits end
 settings.refit_zoom = P.refit_zoom
+settings.refit_zoom_above = P.refit_zoom_above
 -- Experiments (lib/discovery/benchmark.lua): the variant's slumps, or one per lift speed, each in
 -- every cone size, and the vane when vane_scale > 0.
 local experiments = bench.experiments{variant = (P.tiny or P.small) and "small" or "full", lift_speeds = P.lift_speeds,

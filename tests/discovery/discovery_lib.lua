@@ -212,6 +212,10 @@ t = good(); t.settings = {ambiguous_refits = "yes"}; bad(t, "settings%.ambiguous
 t = good(); t.settings = {ambiguous_refits = false}
 check(input.read(paddy.write_json(dir .. "/ambiguous_input.json", t)).settings.ambiguous_refits == false, "ambiguous refits can be turned off")
 t = good(); t.settings = {refit_zoom = 0.01}; bad(t, "settings%.refit_zoom = 0%.01: allowed 0 %(off%) or 0%.02 to 0%.5")
+check(g.settings.refit_zoom_above == 1.2, "a zoom also above 1.2 noise sd by default")
+t = good(); t.settings = {refit_zoom_above = 0.8}; bad(t, "settings%.refit_zoom_above = 0%.8: allowed 0 %(off%) or 1 to 10")
+t = good(); t.settings = {refit_zoom_above = 0}
+check(input.read(paddy.write_json(dir .. "/zoom_above_input.json", t)).settings.refit_zoom_above == 0, "the zoom above a misfit can be turned off")
 check(g.settings.runner_up_refits == 0, "no runner-up refits by default")
 t = good(); t.settings = {runner_up_refits = 4}; bad(t, "settings%.runner_up_refits = 4 is outside the allowed range %[0, 3%]")
 t = good(); t.settings = {runner_up_refits = 2}
@@ -276,6 +280,12 @@ do
   local rs = require("paddy.doe").response_surface{points = Xb, values = values, measured = {1, 0}, covariance = {{1, 0}, {0, 1}}, lower = blo, upper = bhi}
   check(near(rs.x[1], 0.26, 1e-6) and near(rs.x[2], 0.045, 1e-6), "the surface through the bounded zoom finds the minimum: %.6g %.6g", rs.x[1], rs.x[2])
 end
+
+-- When the refit zooms: a significant misfit, or an RMS above the setting (not at or below it; never with 0).
+check(zoom.reason(true, 0.9, 1.2) == "misfit left significant", "a significant misfit zooms")
+check(zoom.reason(false, 1.72, 1.2):find("RMS standardised residual 1.72 above 1.2 noise sd", 1, true), "an RMS above the setting zooms")
+check(zoom.reason(false, 1.2, 1.2) == nil and zoom.reason(false, 1.1, 1.2) == nil, "an RMS at or below the setting does not")
+check(zoom.reason(false, 5, 0) == nil and zoom.reason(false, nil, 1.2) == nil, "never with the setting 0 or no RMS")
 
 -- The refit's valley: θ on the line θ̂ − β·λ (and its half-stratum twins), λ from λ̂ up to the top;
 -- over the whole range when the linear estimate is at or above the top.

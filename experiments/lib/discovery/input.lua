@@ -150,7 +150,7 @@ function M.read(path)
   local s = t.settings or {}
   if type(s) ~= "table" then fail(path, "'settings' must be an object") end
   local allowed = {"iterations", "replicates", "signature_seeds", "confirm_seeds", "fd_step", "alpha", "confusable",
-                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit", "refit_zoom", "refit_zoom_rounds", "ambiguous_refits", "runner_up_refits",
+                   "strong_margin", "thresholds", "bootstrap_trials", "measured_repeats", "resolution_factor", "resolution_seeds", "backtracks", "converge", "start_scan", "refit", "refit_zoom", "refit_zoom_rounds", "refit_zoom_above", "ambiguous_refits", "runner_up_refits",
                    "calibration_start", "signature_baseline"}
   local allowed_set = {}
   for _, k in ipairs(allowed) do allowed_set[k] = true end
@@ -203,6 +203,12 @@ function M.read(path)
     fail(path, string.format("settings.refit_zoom = %g: allowed 0 (off) or 0.02 to 0.5", S.refit_zoom))
   end
   S.refit_zoom_rounds = number(path, "settings.refit_zoom_rounds", s.refit_zoom_rounds or 3, 1, 10)
+  -- ... and also while the RMS standardised residual it leaves is above refit_zoom_above noise sd
+  -- though not significant (0: only when significant; lib/discovery/zoom.lua).
+  S.refit_zoom_above = number(path, "settings.refit_zoom_above", s.refit_zoom_above or 1.2, 0, 10)
+  if S.refit_zoom_above > 0 and S.refit_zoom_above < 1 then
+    fail(path, string.format("settings.refit_zoom_above = %g: allowed 0 (off) or 1 to 10", S.refit_zoom_above))
+  end
   -- An ambiguous answer: refit both confusable candidates and compare the refits (Vuong's test).
   if s.ambiguous_refits ~= nil and type(s.ambiguous_refits) ~= "boolean" then
     fail(path, string.format("settings.ambiguous_refits = %s: allowed true, false", tostring(s.ambiguous_refits)))

@@ -11,9 +11,28 @@
 -- few for its quadratic term: there the box reaches 2h of the range inward, and the axial points
 -- lie at its far side and half-way, so the dimension has three levels (bound, half-way, far side).
 --
+--
+-- When to zoom (M.reason): while the misfit the refit leaves at the confirmation seeds is
+-- significant (the score test's Q0, which allows for the resolution shift), and also while its
+-- RMS standardised residual stays above `above` noise sd even when the test does not call it
+-- significant: the test projects out the resolution shift's direction, so a refit whose surface
+-- has missed the valley floor along that direction (the step of wall adhesion's carried mass) can
+-- pass it with an RMS well above the noise; a zoomed point is kept only when its RMS is smaller.
+--
 --   local zoom = require("lib.discovery.zoom")
 --   local X, lo, hi = zoom.design({0.2, 0.05}, {0, 0}, {0.3, 0.1}, 0.15)
+--   local why = zoom.reason(diagnosis.q0_significant, rms, 1.2)  -- nil: no zoom
 local M = {}
+
+-- significant: the misfit test's verdict; rms: the RMS standardised residual; above: the RMS
+-- above which a zoom is tried anyway (0: only when significant). Returns why to zoom, or nil.
+function M.reason(significant, rms, above)
+  if significant then return "misfit left significant" end
+  if above and above > 0 and rms and rms > above then
+    return string.format("RMS standardised residual %.3g above %.3g noise sd", rms, above)
+  end
+  return nil
+end
 
 -- x0: the centre; lower, upper: the ranges; h: the half-width as a fraction of each range.
 -- Returns the points (list of coordinate lists) and the zoom box (lo, hi).
