@@ -302,6 +302,7 @@ for i, t in ipairs(trials) do
     row.strength = r.result.strength and r.result.strength.value or nil
     row.strength_interval = r.result.strength
     row.misfit_before, row.misfit_after = r.result.misfit_before, r.result.misfit_after
+    row.misfit_whitened_after = r.result.misfit_statistic_after
     row.simulations, row.wall_time_s = r.result.simulations, r.result.wall_time_s
     row.q0_p = r.result.q0_p
     -- What the workflow said it could see of the hidden candidate (nil: nowhere / unbounded).
@@ -332,10 +333,12 @@ paddy.write_json("blind_summary.json", {summary = summary, trials = scored})
 say("correct names %d/%d, false alarms %d/%d", summary.correct_names, summary.effect_trials, summary.false_alarms, summary.null_trials)
 if summary.strength_interval_coverage then
   local rc = summary.strength_resolution_corrected
-  say("named strengths: intervals cover the truth %d/%d%s; misfit after at most 1.2 noise sd %d/%d",
+  local wn = summary.misfit_whitened_after_named
+  say("named strengths: intervals cover the truth %d/%d%s; misfit after at most 1.2 noise sd %d/%d%s",
       summary.strength_interval_coverage.covered, summary.strength_interval_coverage.trials,
       rc and string.format(" (extrapolated to the finer model %d/%d)", rc.covered, rc.trials) or "",
-      summary.misfit_after_named and summary.misfit_after_named.at_most_1_2 or 0, summary.misfit_after_named and summary.misfit_after_named.stats.n or 0)
+      summary.misfit_after_named and summary.misfit_after_named.at_most_1_2 or 0, summary.misfit_after_named and summary.misfit_after_named.stats.n or 0,
+      wn and string.format(" (whitened with the noise correlations %d/%d)", wn.at_most_1_2, wn.stats.n) or "")
 end
 do
   local bd = summary.by_detection

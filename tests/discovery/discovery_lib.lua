@@ -110,11 +110,11 @@ check(near(s.misfit_after_over_before.mean, (0.25 + 1) / 2, 1e-15), "misfit rati
 -- Named strengths: the interval's coverage, the extrapolated strength's error and coverage, the
 -- misfit left against the 1.2 target (right names only).
 local sn = score.summarise({
-  {truth = {kind = "candidate", name = "a", strength = 0.2}, answer = "a", right = true, strength = 0.25, misfit_before = 3, misfit_after = 1.1,
+  {truth = {kind = "candidate", name = "a", strength = 0.2}, answer = "a", right = true, strength = 0.25, misfit_before = 3, misfit_after = 1.1, misfit_whitened_after = 1.25,
    strength_interval = {value = 0.25, low = 0.22, high = 0.28, resolution_corrected = {value = 0.21, low = 0.18, high = 0.24}}},
-  {truth = {kind = "candidate", name = "a", strength = 0.1}, answer = "a", right = true, strength = 0.1, misfit_before = 2, misfit_after = 1.3,
+  {truth = {kind = "candidate", name = "a", strength = 0.1}, answer = "a", right = true, strength = 0.1, misfit_before = 2, misfit_after = 1.3, misfit_whitened_after = 0.9,
    strength_interval = {value = 0.1, low = 0.09, high = 0.11}},
-  {truth = {kind = "candidate", name = "b", strength = 1}, answer = "a", right = false, strength = 2, misfit_after = 0.9,
+  {truth = {kind = "candidate", name = "b", strength = 1}, answer = "a", right = false, strength = 2, misfit_after = 0.9, misfit_whitened_after = 0.8,
    strength_interval = {value = 2, low = 0.5, high = 3, resolution_corrected = {value = 1, low = 0.5, high = 1.5}}},
 }, {"a", "b"})
 check(sn.strength_interval_coverage.covered == 1 and sn.strength_interval_coverage.trials == 2, "interval coverage %d of %d",
@@ -124,6 +124,9 @@ check(sn.strength_resolution_corrected.trials == 1 and sn.strength_resolution_co
       sn.strength_resolution_corrected.relative_error.mean)
 check(sn.misfit_after_named.at_most_1_2 == 1 and sn.misfit_after_named.stats.n == 2, "misfit after right names: %d of %d at most 1.2",
       sn.misfit_after_named.at_most_1_2, sn.misfit_after_named.stats.n)
+check(sn.misfit_whitened_after_named.at_most_1_2 == 1 and sn.misfit_whitened_after_named.stats.n == 2
+      and near(sn.misfit_whitened_after_named.stats.mean, (1.25 + 0.9) / 2, 1e-15), "whitened misfit after right names: %d of %d, mean %.17g",
+      sn.misfit_whitened_after_named.at_most_1_2, sn.misfit_whitened_after_named.stats.n, sn.misfit_whitened_after_named.stats.mean)
 check(s.strength_interval_coverage == nil and s.strength_resolution_corrected == nil, "no intervals: no coverage reported")
 
 -- Stacking: dotted keys, vectors, standardisation, length errors.
