@@ -206,8 +206,7 @@ function M.summarise(trials, candidate_names_list)
   local strength_err, ratio = {}, {}
   -- Named strengths (right names only): the interval's coverage of the truth, the extrapolation to
   -- the finer model (strength_interval.resolution_corrected) and the misfit left.
-  local err_rc, covered, covered_rc, n_int, n_rc, misfit_named, misfit_ok = {}, 0, 0, 0, 0, {}, 0
-  local whitened_named, whitened_ok = {}, 0
+  local err_rc, covered, covered_rc, n_int, n_rc, misfit_named, whitened_named = {}, 0, 0, 0, 0, {}, {}
   local function covers(iv, x) return iv.low ~= nil and iv.high ~= nil and iv.low <= x and x <= iv.high end
   for _, t in ipairs(trials) do
     local row = t.truth.kind == "candidate" and t.truth.name or (t.truth.kind == "none" and "none" or "outside")
@@ -231,14 +230,8 @@ function M.summarise(trials, candidate_names_list)
             if t.truth.strength > 0 then err_rc[#err_rc + 1] = (rc.value - t.truth.strength) / t.truth.strength end
           end
         end
-        if t.misfit_after then
-          misfit_named[#misfit_named + 1] = t.misfit_after
-          if t.misfit_after <= 1.2 then misfit_ok = misfit_ok + 1 end
-        end
-        if t.misfit_whitened_after then
-          whitened_named[#whitened_named + 1] = t.misfit_whitened_after
-          if t.misfit_whitened_after <= 1.2 then whitened_ok = whitened_ok + 1 end
-        end
+        misfit_named[#misfit_named + 1] = t.misfit_after
+        whitened_named[#whitened_named + 1] = t.misfit_whitened_after
       end
     elseif t.truth.kind == "none" then
       null_n = null_n + 1
@@ -258,6 +251,13 @@ function M.summarise(trials, candidate_names_list)
     table.sort(sorted)
     return {n = #v, mean = s / #v, mean_abs = a / #v, median = sorted[(#v + 1) // 2]}
   end
+  -- The misfits left after right names against the issue's target of at most 1.2 noise sd.
+  local function against_target(v)
+    if #v == 0 then return nil end
+    local k = 0
+    for _, x in ipairs(v) do if x <= 1.2 then k = k + 1 end end
+    return {stats = stats(v), at_most_1_2 = k}
+  end
   return {
     columns = columns, rows = rows_order, confusion = matrix, trials = #trials,
     effect_trials = eff_n, correct_names = eff_right,
@@ -272,10 +272,10 @@ function M.summarise(trials, candidate_names_list)
     strength_interval_coverage = n_int > 0 and {covered = covered, trials = n_int} or nil,
     strength_resolution_corrected = n_rc > 0 and {relative_error = stats(err_rc), covered = covered_rc, trials = n_rc} or nil,
     -- The issue's target: the misfit left after adding a right name at most 1.2 noise sd.
-    misfit_after_named = #misfit_named > 0 and {stats = stats(misfit_named), at_most_1_2 = misfit_ok} or nil,
+    misfit_after_named = against_target(misfit_named),
     -- The same misfit whitened with the noise covariance's correlations (result.json's
     -- misfit_statistic_after: sqrt(rᵀC⁻¹r / m) instead of the RMS of r_i / sqrt(C_ii)).
-    misfit_whitened_after_named = #whitened_named > 0 and {stats = stats(whitened_named), at_most_1_2 = whitened_ok} or nil,
+    misfit_whitened_after_named = against_target(whitened_named),
   }
 end
 
