@@ -11,6 +11,7 @@
 -- few for its quadratic term: there the box reaches 2h of the range inward, and the axial points
 -- lie at its far side and half-way, so the dimension has three levels (bound, half-way, far side).
 --
+--
 -- When to zoom (M.reason): while the misfit the refit leaves at the confirmation seeds is
 -- significant (the score test's Q0, which allows for the resolution shift), and also while its
 -- RMS standardised residual stays above `above` noise sd even when the test does not call it
