@@ -175,11 +175,14 @@ for li, l in ipairs(levels) do
   s.vane_yield_stress_Pa = {mean = s.vane_yield_stress_Pa[1], std = s.vane_yield_stress_Pa[2], values = tv}
   s.slump_yield_stress_Pa = {mean = s.slump_yield_stress_Pa[1], std = s.slump_yield_stress_Pa[2], values = ts}
   s.ratio = {mean = s.ratio[1], std = s.ratio[2], values = ratios}
-  s.within_target = #ratios > 0 and math.abs(s.ratio.mean - 1) <= P.target
+  -- Without a vane at the reference level (a depth series without it) there is no ratio: the
+  -- agreement is undetermined (nil: an empty cell), not "false".
+  if #ratios > 0 then s.within_target = math.abs(s.ratio.mean - 1) <= P.target end
   summary[#summary + 1] = s
   sum_rows[#sum_rows + 1] = {l.label, l.value, #ratios, report.cell(s.vane_yield_stress_Pa.mean), report.cell(s.vane_yield_stress_Pa.std),
                              report.cell(s.slump_yield_stress_Pa.mean), report.cell(s.slump_yield_stress_Pa.std),
-                             report.cell(s.ratio.mean), report.cell(s.ratio.std), tostring(s.within_target)}
+                             report.cell(s.ratio.mean), report.cell(s.ratio.std),
+                             s.within_target == nil and "" or tostring(s.within_target)}
 end
 local run_cols = {"set", "value", "seed", "slump_mm", "slump_flow_mm", "fill_solid_fraction", "slump_yield_stress_Pa",
                   "slump_at_rest", "vane_peak_torque_Nm", "vane_peak_angle_deg", "vane_peak_reached", "vane_yield_stress_Pa", "ratio",
@@ -353,9 +356,15 @@ end
 
 print(string.format("%-10s %8s  %18s  %18s  %14s", "set", "value", "vane [Pa]", "slump [Pa]", "ratio"))
 for _, s in ipairs(summary) do
-  print(string.format("%-10s %8g  %9.1f +- %-6.1f  %9.1f +- %-6.1f  %6.3f +- %-5.3f %s", s.set, s.value, s.vane_yield_stress_Pa.mean,
-                      s.vane_yield_stress_Pa.std, s.slump_yield_stress_Pa.mean, s.slump_yield_stress_Pa.std, s.ratio.mean,
-                      s.ratio.std, s.within_target and "within target" or "NOT within target"))
+  if s.within_target == nil then
+    print(string.format("%-10s %8g  %18s  %9.1f +- %-6.1f  no vane at reference_fill_level = %g m: see the depth series",
+                        s.set, s.value, "-", s.slump_yield_stress_Pa.mean or 0 / 0, s.slump_yield_stress_Pa.std or 0 / 0,
+                        P.reference_fill_level))
+  else
+    print(string.format("%-10s %8g  %9.1f +- %-6.1f  %9.1f +- %-6.1f  %6.3f +- %-5.3f %s", s.set, s.value, s.vane_yield_stress_Pa.mean,
+                        s.vane_yield_stress_Pa.std, s.slump_yield_stress_Pa.mean, s.slump_yield_stress_Pa.std, s.ratio.mean,
+                        s.ratio.std, s.within_target and "within target" or "NOT within target"))
+  end
 end
 if depth then
   print(string.format("vane depth series at fill levels %s m: tau_peak = c + sigma_v tan(phi) (pooled over seeds; per seed mean +- std)",

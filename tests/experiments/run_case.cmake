@@ -508,6 +508,16 @@ elseif(CASE STREQUAL "validation_ys")
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out noref --threads 1 ${tiny}
             --set vane_fill_levels=0.102,0.12 --set reference_fill_level=0.15 --set campaign_dir=${WORK}/out/campaign)
   expect_code(${code} 0)
+  # Its summary has no vane: the agreement is undetermined (said, an empty cell), not a "nan"
+  # ratio reported as "NOT within target".
+  if(LAST_STDOUT MATCHES "nan" OR NOT LAST_STDOUT MATCHES "no vane at reference_fill_level = 0.15 m")
+    message(FATAL_ERROR "a depth series without the reference level: expected the summary to say there is no vane, got:\n${LAST_STDOUT}")
+  endif()
+  file(STRINGS ${WORK}/noref/ys_summary.csv noref_rows)
+  list(GET noref_rows 1 noref_row)
+  if(NOT noref_row MATCHES ",$")
+    message(FATAL_ERROR "ys_summary.csv without a vane: within_target should be empty, got: ${noref_row}")
+  endif()
   result_json(GET noref pr depth_series sets 0 pooled_c_over_slump)
   result_json(GET noref pc depth_series sets 0 pooled c)
   result_json(GET noref ts depth_series sets 0 slump_yield_stress_Pa mean)
