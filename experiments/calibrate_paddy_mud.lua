@@ -288,21 +288,11 @@ local function reference_procedure()
     return table.concat(t, ", ")
   end)(), optimum.desirability)
 
-  -- 5. Verification at the optimum with new seeds (the first draws the pile pictures).
+  -- 5. Verification at the optimum with new seeds (the first draws the pile pictures), and the
+  -- rheometer at the optimum in the same batch: the longer vane run first, so that it runs beside
+  -- the slump runs instead of alone after them.
   local V = input.verification
-  local v_points = {}
-  for s = 1, V.seeds do
-    v_points[s] = {params = params_of(optimum.factors), values = optimum.factors, seed = seed0 + 1000 + s - 1,
-                   extra = s == 1 and P.pictures and {pictures = true} or nil, label = "seed " .. (seed0 + 1000 + s - 1)}
-  end
-  say("5. Verification: %d simulations at the optimum", V.seeds)
-  local v_rows = runner:run("verification", v_points)
-  local v_mean, v_sd = jobs.mean_responses(v_rows, resp)
-  local v_err, v_worst = jobs.errors(v_mean, measured)
-  for _, r in ipairs(resp) do
-    say("   %s: %.1f +- %.1f (measured %g, error %.2f %%)", r, v_mean[r], v_sd[r], measured[r], 100 * v_err[r])
-  end
-  local rheo
+  local v_points, batch, rheo_point = {}, {}, nil
   if input.rheometer.run then
     local rp = {particle_diameter = rheometer_diameter, pictures = P.pictures, snapshot_interval = 0, progress = false,
                 timestep_fraction = step.fraction, timestep_damping = false}
@@ -314,9 +304,26 @@ local function reference_procedure()
       if not csv:match("^/") then csv = (input.path:match("^(.*)/[^/]*$") or ".") .. "/" .. csv end
       rp.measured_csv = csv
     end
-    say("   rheometer at the optimum")
-    local row = runner:run("rheometer", {{script = "rheometer.lua", params = rp, standalone = true, seed = seed0 + 1000,
-                                                 responses = {}, label = "vane"}})[1]
+    rheo_point = {script = "rheometer.lua", params = rp, standalone = true, seed = seed0 + 1000, responses = {},
+                  label = "vane", stage = "rheometer"}
+    batch[1] = rheo_point
+  end
+  for s = 1, V.seeds do
+    v_points[s] = {params = params_of(optimum.factors), values = optimum.factors, seed = seed0 + 1000 + s - 1,
+                   extra = s == 1 and P.pictures and {pictures = true} or nil, label = "seed " .. (seed0 + 1000 + s - 1)}
+    batch[#batch + 1] = v_points[s]
+  end
+  say("5. Verification: %d simulations at the optimum%s", V.seeds, rheo_point and ", and the rheometer there" or "")
+  local batch_rows = runner:run("verification", batch)
+  local v_rows = {table.unpack(batch_rows, rheo_point and 2 or 1)}
+  local v_mean, v_sd = jobs.mean_responses(v_rows, resp)
+  local v_err, v_worst = jobs.errors(v_mean, measured)
+  for _, r in ipairs(resp) do
+    say("   %s: %.1f +- %.1f (measured %g, error %.2f %%)", r, v_mean[r], v_sd[r], measured[r], 100 * v_err[r])
+  end
+  local rheo
+  if rheo_point then
+    local row = batch_rows[1]
     rheo = {result = row.result, dir = row.dir, index = row.index}
   end
   return {path = path, steepest_ascent = sa, best_step = best, box = box, design = bbd, runs = bb_runs, data = bb_data,

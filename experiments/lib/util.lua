@@ -126,6 +126,35 @@ function M.write_csv(name, columns, rows)
   return M.write_file(M.out(name), table.concat(lines, "\n") .. "\n")
 end
 
+-- The cells of one CSV line: separated by commas, a cell in double quotes may hold commas and
+-- doubled quotes (RFC 4180), as write_csv writes them; spaces around a cell are dropped.
+local function csv_cells(line)
+  local cells, i, n = {}, 1, #line
+  while true do
+    local cell
+    local s = line:find("[^ \t]", i) or n + 1
+    if line:sub(s, s) == '"' then
+      local parts, j = {}, s + 1
+      while true do
+        local q = line:find('"', j, true)
+        if not q then parts[#parts + 1] = line:sub(j); j = n + 1; break end
+        parts[#parts + 1] = line:sub(j, q - 1)
+        if line:sub(q + 1, q + 1) == '"' then parts[#parts + 1] = '"'; j = q + 2 else j = q + 1; break end
+      end
+      cell = table.concat(parts)
+      local comma = line:find(",", j, true)
+      i = comma and comma + 1 or n + 2
+    else
+      local comma = line:find(",", i, true)
+      cell = line:sub(i, (comma or n + 1) - 1):match("^%s*(.-)%s*$")
+      i = comma and comma + 1 or n + 2
+    end
+    cells[#cells + 1] = cell
+    if i > n + 1 then break end
+  end
+  return cells
+end
+
 -- Reads a CSV file with a header line into an array of {column = number or string}.
 function M.read_csv(path)
   local f, err = io.open(path, "r")
@@ -136,8 +165,7 @@ function M.read_csv(path)
     line_no = line_no + 1
     line = line:gsub("\r$", "")
     if line:match("%S") and not line:match("^%s*#") then
-      local cells = {}
-      for cell in (line .. ","):gmatch("([^,]*),") do cells[#cells + 1] = cell:match("^%s*(.-)%s*$") end
+      local cells = csv_cells(line)
       if not header then
         header = cells
       else

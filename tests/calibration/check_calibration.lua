@@ -72,6 +72,16 @@ if P.strategy ~= "surrogate" then
   -- The rheometer ran at the optimum and was compared with the measured torque file.
   check(ref.rheometer and ref.rheometer.comparison and ref.rheometer.comparison.mean_relative_error,
         "rheometer comparison with the measured torque curve")
+  -- The rheometer ran in the verification's batch, first (its run logged just before the
+  -- verification runs), and is logged under its own stage.
+  local rh = cal.simulations[ref.rheometer.index]
+  check(rh and rh.stage == "rheometer", "the rheometer's run is logged under stage '%s'", rh and tostring(rh.stage) or "?")
+  for k, v in ipairs(ref.verification.runs) do
+    check(v.index == ref.rheometer.index + k, "verification run %d logged as simulation %s, expected %d (right after the rheometer)",
+          k, tostring(v.index), ref.rheometer.index + k)
+    check(cal.simulations[v.index].stage == "verification", "simulation %d logged under stage '%s'", v.index,
+          tostring(cal.simulations[v.index].stage))
+  end
   check(r.reference.optimum.mud_mud_friction ~= nil, "result lists every calibrated parameter")
 end
 if P.strategy ~= "reference" then

@@ -87,6 +87,75 @@ TEST_CASE("doe/gp: maximum-likelihood fit interpolates a smooth function", "[doe
   CHECK(gp.hyperparameters().noise_variance < 1e-3);
 }
 
+TEST_CASE("doe/gp: input warping is the Kumaraswamy CDF, and a = b = 1 is no warping", "[doe][gp]") {
+  Eigen::MatrixXd X(3, 2);
+  X << 0.1, 0.9, 0.5, 0.2, 0.8, 0.6;
+  Eigen::VectorXd y(3);
+  y << 1.0, 3.0, 2.0;
+  GpHyperparameters h = hyper(0.4, 1.3, 1e-4, 2);
+  GaussianProcess plain;
+  plain.fitFixed(X, y, h);
+  h.warp_a = Eigen::VectorXd::Ones(2), h.warp_b = Eigen::VectorXd::Ones(2);
+  GaussianProcess identity;
+  identity.fitFixed(X, y, h);
+  const Eigen::Vector2d x(0.3, 0.45);
+  CHECK(identity.predict(x).mean == Approx(plain.predict(x).mean).epsilon(1e-14));
+  CHECK(identity.predict(x).variance == Approx(plain.predict(x).variance).epsilon(1e-14));
+  CHECK(identity.logMarginalLikelihood() == Approx(plain.logMarginalLikelihood()).epsilon(1e-14));
+
+  h.warp_a << 0.5, 2.0;
+  h.warp_b << 1.5, 0.7;
+  GaussianProcess warped;
+  warped.fitFixed(X, y, h);
+  const Eigen::VectorXd w = warped.warp(x);
+  CHECK(w(0) == Approx(1 - std::pow(1 - std::pow(0.3, 0.5), 1.5)).epsilon(1e-14));
+  CHECK(w(1) == Approx(1 - std::pow(1 - std::pow(0.45, 2.0), 0.7)).epsilon(1e-14));
+  CHECK(warped.warp(Eigen::Vector2d(0, 1)) == Eigen::Vector2d(0, 1));  // the ends stay where they are
+  // The warped model is the plain model on the warped inputs.
+  Eigen::MatrixXd Xw(3, 2);
+  for (int i = 0; i < 3; ++i) Xw.row(i) = warped.warp(X.row(i).transpose()).transpose();
+  GpHyperparameters hp = h;
+  hp.warp_a.resize(0), hp.warp_b.resize(0);
+  GaussianProcess onWarped;
+  onWarped.fitFixed(Xw, y, hp);
+  CHECK(warped.predict(x).mean == Approx(onWarped.predict(w).mean).epsilon(1e-13));
+  CHECK(warped.predict(x).variance == Approx(onWarped.predict(w).variance).epsilon(1e-13));
+
+  h.warp_b.resize(1);
+  CHECK_THROWS_WITH(warped.fitFixed(X, y, h), Catch::Contains("one a > 0 and one b > 0 per input"));
+  GpFitOptions o;
+  o.warp_inputs = true, o.warp_prior_sd = 0;
+  CHECK_THROWS_WITH(warped.fit(X, y, o), Catch::Contains("warp_prior_sd"));
+}
+
+TEST_CASE("doe/gp: a learned warping fits a response that is steep near one end", "[doe][gp]") {
+  // y = log(x + 0.01): its slope falls 100-fold across [0, 1], which one stationary length scale
+  // cannot follow; w(x) with a < 1 stretches the steep end.
+  const auto f = [](double x) { return std::log(x + 0.01); };
+  const int n = 10;
+  Eigen::MatrixXd X(n, 1);
+  Eigen::VectorXd y(n);
+  for (int i = 0; i < n; ++i) X(i, 0) = (i + 0.5) / n, y(i) = f(X(i, 0));
+  GpFitOptions o;
+  GaussianProcess plain, warped;
+  plain.fit(X, y, o);
+  o.warp_inputs = true;
+  warped.fit(X, y, o);
+  double e_plain = 0, e_warped = 0;
+  int m = 0;
+  for (double x = 0.01; x < 1; x += 0.01, ++m) {
+    const Eigen::VectorXd xv = Eigen::VectorXd::Constant(1, x);
+    e_plain += std::pow(plain.predict(xv).mean - f(x), 2);
+    e_warped += std::pow(warped.predict(xv).mean - f(x), 2);
+  }
+  e_plain = std::sqrt(e_plain / m), e_warped = std::sqrt(e_warped / m);
+  INFO("RMS error plain " << e_plain << ", warped " << e_warped << ", a = " << warped.hyperparameters().warp_a(0)
+                          << ", b = " << warped.hyperparameters().warp_b(0));
+  CHECK(warped.hyperparameters().warp_a(0) < 1.0);
+  CHECK(e_warped < 0.5 * e_plain);
+  CHECK(plain.hyperparameters().warp_a.size() == 0);  // off unless asked for
+}
+
 TEST_CASE("doe/gp: expected improvement matches Jones et al. and quadrature", "[doe][gp]") {
   CHECK(expectedImprovement(0, 1, 0) == Approx(1 / std::sqrt(2 * M_PI)).epsilon(1e-14));
   CHECK(expectedImprovement(3, 0, 5) == 2.0);

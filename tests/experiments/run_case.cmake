@@ -622,6 +622,42 @@ elseif(CASE STREQUAL "validation_rs")
     message(FATAL_ERROR "the refusal does not name step_times and its range: ${se}")
   endif()
 
+elseif(CASE STREQUAL "surrogate_trials")
+  # experiments/calibration/surrogate_trials.lua on a known linear slump test (check_surrogate_trials.lua
+  # writes it): the emulator's data and the seeds' pooled scatter, the trials' table and summary.
+  run_paddy(code se run ${HERE}/check_surrogate_trials.lua --set phase=data --out data)
+  expect_code(${code} 0)
+  run_paddy(code se run ${SOURCE}/experiments/calibration/surrogate_trials.lua --out out --threads 1
+            --set input=${SOURCE}/tests/calibration/mini_mud.json --set data=${WORK}/data/simulations.csv
+            --set factors=H7,H5 --set trials=3 --set holdout_sizes=12 --set holdout_repeats=3)
+  expect_code(${code} 0)
+  foreach(f surrogate_trials.csv surrogate_trials_runs.csv surrogate_trials.json)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  run_paddy(code se run ${HERE}/check_surrogate_trials.lua --set dir=${WORK}/out --set trials=3 --out check)
+  expect_code(${code} 0)
+  # The same command gives the same trials, bit for bit (a sum in the order of a Lua table's keys,
+  # which changes from process to process, made the seeds' scatter differ in its last bits).
+  foreach(again 1 2)
+    run_paddy(code se run ${SOURCE}/experiments/calibration/surrogate_trials.lua --out again${again} --threads 1
+              --set input=${SOURCE}/tests/calibration/mini_mud.json --set data=${WORK}/data/simulations.csv
+              --set factors=H7,H5 --set trials=3 --set holdout_sizes=12 --set holdout_repeats=3)
+    expect_code(${code} 0)
+    foreach(f surrogate_trials_runs.csv surrogate_trials.json)
+      execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${WORK}/out/${f} ${WORK}/again${again}/${f} RESULT_VARIABLE differ)
+      if(differ)
+        message(FATAL_ERROR "a second run of the same command wrote another ${f}")
+      endif()
+    endforeach()
+  endforeach()
+  # A strategy that does not exist is refused with the allowed ones.
+  run_paddy(code se run ${SOURCE}/experiments/calibration/surrogate_trials.lua --out bad
+            --set input=${SOURCE}/tests/calibration/mini_mud.json --set data=${WORK}/data/simulations.csv --set strategies=plain,fast)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "strategies = 'fast' is not one of plain, warped")
+    message(FATAL_ERROR "the refusal does not name the strategy and the allowed ones: ${se}")
+  endif()
+
 elseif(CASE STREQUAL "validation_cg")
   # The coarse-graining campaign on 2 sizes x 2 seeds of tiny released columns: per-size mean and
   # std, the tests and the pictures.

@@ -242,9 +242,7 @@ json optimize(const json& o) {
   return out;
 }
 
-// surrogate_suggest{factors = {{name =, low =, high =}, ...}, data = {rows}, responses = {...},
-//                   targets = {resp = value}, batch =, seed =, samples =, candidates =}
-json surrogate(const json& o) {
+std::vector<Factor> boxFactors(const json& o) {
   std::vector<Factor> f;
   for (const auto& x : o.value("factors", json::array())) {
     Factor fx{x.value("name", ""), number(x.value("low", json()), "factors[].low"), number(x.value("high", json()), "factors[].high")};
@@ -253,6 +251,98 @@ json surrogate(const json& o) {
     f.push_back(fx);
   }
   if (f.empty()) throw DoeError("factors = {{name =, low =, high =}, ...} is required");
+  return f;
+}
+
+// Rows of factor values → unit-cube coordinates of the factors' box.
+Eigen::MatrixXd unitPoints(const json& rows, const std::vector<Factor>& f, const std::string& what) {
+  if (!rows.is_array()) throw DoeError(what + " must be an array of rows");
+  Eigen::MatrixXd X(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(f.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string where = what + " row " + std::to_string(i + 1);
+    for (std::size_t j = 0; j < f.size(); ++j) {
+      if (!rows[i].contains(f[j].name)) throw DoeError(where + ": missing value for '" + f[j].name + "'");
+      const double x = number(rows[i][f[j].name], where + ", " + f[j].name);
+      X(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (x - f[j].low) / (f[j].high - f[j].low);
+    }
+  }
+  return X;
+}
+
+json hyperJson(const GpHyperparameters& h, const std::vector<Factor>& f) {
+  json jh{{"signal_variance", h.signal_variance}, {"noise_variance", h.noise_variance}};
+  for (std::size_t j = 0; j < f.size(); ++j) {
+    const auto k = static_cast<Eigen::Index>(j);
+    jh["length_scales"][f[j].name] = h.length_scales(k);
+    if (h.warp_a.size() != 0) jh["warp_a"][f[j].name] = h.warp_a(k), jh["warp_b"][f[j].name] = h.warp_b(k);
+  }
+  return jh;
+}
+
+GpHyperparameters hyperFromJson(const json& j, const std::vector<Factor>& f) {
+  GpHyperparameters h;
+  const auto d = static_cast<Eigen::Index>(f.size());
+  h.length_scales.resize(d);
+  const bool warped = j.contains("warp_a");
+  if (warped) h.warp_a.resize(d), h.warp_b.resize(d);
+  for (Eigen::Index k = 0; k < d; ++k) {
+    const std::string& name = f[static_cast<std::size_t>(k)].name;
+    if (!j.contains("length_scales") || !j["length_scales"].contains(name))
+      throw DoeError("hyperparameters.length_scales: no value for '" + name + "'");
+    h.length_scales(k) = number(j["length_scales"][name], "hyperparameters.length_scales." + name);
+    if (warped) {
+      if (!j["warp_a"].contains(name) || !j.contains("warp_b") || !j["warp_b"].contains(name))
+        throw DoeError("hyperparameters.warp_a/warp_b: no value for '" + name + "'");
+      h.warp_a(k) = number(j["warp_a"][name], "hyperparameters.warp_a." + name);
+      h.warp_b(k) = number(j["warp_b"][name], "hyperparameters.warp_b." + name);
+    }
+  }
+  h.signal_variance = number(j.value("signal_variance", json()), "hyperparameters.signal_variance");
+  h.noise_variance = number(j.value("noise_variance", json()), "hyperparameters.noise_variance");
+  return h;
+}
+
+// gaussian_process{factors = {{name =, low =, high =}, ...}, data = {rows}, response = name,
+//                  warp_inputs = false, seed = 1, hyperparameters = (as returned: fixed, not fitted),
+//                  points = {rows}} → {hyperparameters =, log_likelihood =,
+//                  predictions = {{mean =, sd =}, ...}} (sd of the latent function, noise excluded)
+json gaussianProcess(const json& o) {
+  const auto f = boxFactors(o);
+  const std::string response = o.value("response", "");
+  if (response.empty()) throw DoeError("response = name is required");
+  if (!o.contains("data")) throw DoeError("data must be an array of rows");
+  const Eigen::MatrixXd X = unitPoints(o["data"], f, "data");
+  Eigen::VectorXd y(X.rows());
+  for (std::size_t i = 0; i < o["data"].size(); ++i) {
+    if (!o["data"][i].contains(response)) throw DoeError("data row " + std::to_string(i + 1) + ": missing value for '" + response + "'");
+    y(static_cast<Eigen::Index>(i)) = number(o["data"][i][response], "data row " + std::to_string(i + 1) + ", " + response);
+  }
+  GaussianProcess gp;
+  if (o.contains("hyperparameters") && !o["hyperparameters"].is_null()) {
+    gp.fitFixed(X, y, hyperFromJson(o["hyperparameters"], f));
+  } else {
+    GpFitOptions fo;
+    fo.seed = o.value("seed", 1ULL);
+    fo.warp_inputs = o.value("warp_inputs", false);
+    gp.fit(X, y, fo);
+  }
+  json out{{"hyperparameters", hyperJson(gp.hyperparameters(), f)}, {"log_likelihood", gp.logMarginalLikelihood()}};
+  out["predictions"] = json::array();
+  if (o.contains("points")) {
+    const Eigen::MatrixXd P = unitPoints(o["points"], f, "points");
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+      const auto p = gp.predict(P.row(i).transpose());
+      out["predictions"].push_back({{"mean", p.mean}, {"sd", p.sd()}});
+    }
+  }
+  return out;
+}
+
+// surrogate_suggest{factors = {{name =, low =, high =}, ...}, data = {rows}, responses = {...},
+//                   targets = {resp = value}, batch =, seed =, samples =, candidates =,
+//                   warp_inputs = false}
+json surrogate(const json& o) {
+  const auto f = boxFactors(o);
   const auto responses = strings(o.value("responses", json::array()), "responses");
   if (responses.empty()) throw DoeError("responses = {...} is required");
   if (!o.contains("targets") || !o["targets"].is_object()) throw DoeError("targets = {response = value} is required");
@@ -263,15 +353,10 @@ json surrogate(const json& o) {
   }
   if (!o.contains("data") || !o["data"].is_array()) throw DoeError("data must be an array of rows");
   const auto& data = o["data"];
-  Eigen::MatrixXd X(static_cast<Eigen::Index>(data.size()), static_cast<Eigen::Index>(f.size()));
+  const Eigen::MatrixXd X = unitPoints(data, f, "data");
   Eigen::MatrixXd Y(static_cast<Eigen::Index>(data.size()), static_cast<Eigen::Index>(responses.size()));
   for (std::size_t i = 0; i < data.size(); ++i) {
     const std::string where = "data row " + std::to_string(i + 1);
-    for (std::size_t j = 0; j < f.size(); ++j) {
-      if (!data[i].contains(f[j].name)) throw DoeError(where + ": missing value for '" + f[j].name + "'");
-      const double x = number(data[i][f[j].name], where + ", " + f[j].name);
-      X(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) = (x - f[j].low) / (f[j].high - f[j].low);
-    }
     for (std::size_t r = 0; r < responses.size(); ++r) {
       if (!data[i].contains(responses[r])) throw DoeError(where + ": missing value for '" + responses[r] + "'");
       Y(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(r)) = number(data[i][responses[r]], where + ", " + responses[r]);
@@ -283,6 +368,7 @@ json surrogate(const json& o) {
   so.candidates = o.value("candidates", so.candidates);
   so.seed = o.value("seed", 1ULL);
   so.gp.seed = so.seed;
+  so.gp.warp_inputs = o.value("warp_inputs", false);
   const SurrogateStep step = suggestCalibrationPoints(X, Y, targets, so);
   json out;
   out["incumbent_error"] = step.incumbent_error;
@@ -301,12 +387,7 @@ json surrogate(const json& o) {
     js["predicted_error"] = s.predicted_error;
     out["suggestions"].push_back(js);
   }
-  for (std::size_t r = 0; r < responses.size(); ++r) {
-    const auto& h = step.hyperparameters[r];
-    json jh{{"signal_variance", h.signal_variance}, {"noise_variance", h.noise_variance}};
-    for (std::size_t j = 0; j < f.size(); ++j) jh["length_scales"][f[j].name] = h.length_scales(static_cast<Eigen::Index>(j));
-    out["hyperparameters"][responses[r]] = jh;
-  }
+  for (std::size_t r = 0; r < responses.size(); ++r) out["hyperparameters"][responses[r]] = hyperJson(step.hyperparameters[r], f);
   return out;
 }
 
@@ -360,6 +441,7 @@ int lAnalyze(lua_State* L) { return wrap<analyze>(L, "analyze"); }
 int lOptimize(lua_State* L) { return wrap<optimize>(L, "optimize"); }
 int lSteepest(lua_State* L) { return wrap<steepest>(L, "steepest_ascent"); }
 int lSurrogate(lua_State* L) { return wrap<surrogate>(L, "surrogate_suggest"); }
+int lGaussianProcess(lua_State* L) { return wrap<gaussianProcess>(L, "gaussian_process"); }
 // Naming a missing effect (discovery_json.hpp).
 int lNoiseCovariance(lua_State* L) { return wrap<noiseCovarianceJson>(L, "noise_covariance"); }
 int lDiagnose(lua_State* L) { return wrap<diagnoseJson>(L, "diagnose"); }
@@ -379,6 +461,7 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"optimize", paddy::doe::lOptimize},
                                  {"steepest_ascent", paddy::doe::lSteepest},
                                  {"surrogate_suggest", paddy::doe::lSurrogate},
+                                 {"gaussian_process", paddy::doe::lGaussianProcess},
                                  {"noise_covariance", paddy::doe::lNoiseCovariance},
                                  {"diagnose", paddy::doe::lDiagnose},
                                  {"gauss_newton", paddy::doe::lGaussNewton},

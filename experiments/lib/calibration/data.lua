@@ -29,7 +29,7 @@ function M.document(o)
                      verification = {runs = strip(r.verification.runs), mean = r.verification.mean, sd = r.verification.sd,
                                      errors = r.verification.errors, worst = r.verification.worst},
                      rheometer = r.rheometer and {steps = r.rheometer.result.steps, herschel_bulkley = r.rheometer.result.herschel_bulkley,
-                                                  comparison = r.rheometer.result.comparison} or nil}
+                                                  comparison = r.rheometer.result.comparison, index = r.rheometer.index} or nil}
   end
   if o.surrogate then
     local s = o.surrogate

@@ -123,10 +123,13 @@ function M.read(path)
   if input.rheometer.measured_torque_csv ~= nil and type(input.rheometer.measured_torque_csv) ~= "string" then
     fail(path, "rheometer.measured_torque_csv must be a file name or null")
   end
-  input.surrogate = section(t, "surrogate", {initial_points = 6, budget = 30, confirm_seeds = 2})
+  input.surrogate = section(t, "surrogate", {initial_points = 6, budget = 30, confirm_seeds = 2, warp_inputs = true})
   number(path, "surrogate.initial_points", input.surrogate.initial_points, 2, 100)
   number(path, "surrogate.budget", input.surrogate.budget, input.surrogate.initial_points, 1000)
   number(path, "surrogate.confirm_seeds", input.surrogate.confirm_seeds, 0, 20)
+  if type(input.surrogate.warp_inputs) ~= "boolean" then
+    fail(path, "surrogate.warp_inputs must be true or false, not " .. tostring(input.surrogate.warp_inputs))
+  end
   return input
 end
 

@@ -30,7 +30,8 @@ end
 -- Runs the points (in parallel as the campaign allows) and returns one row per point, in order.
 -- A point: {params = {name = value}, seed = n, label = "...", script = optional other script,
 -- extra = {name = value} (parameters that are not factors: pictures, ...), standalone = true
--- (the runner's fixed parameters are not added: another experiment), responses = {...}}.
+-- (the runner's fixed parameters are not added: another experiment), responses = {...},
+-- stage = "..." (logged under this stage instead of the batch's: runs of two stages in one batch)}.
 local UNSTABLE = "is too large for these velocities"
 
 function Runner:run(stage, points)
@@ -68,7 +69,9 @@ function Runner:run(stage, points)
     for _, e in ipairs(self.campaign:run(again)) do entries[e.key] = e end
   end
   local rows, failures = {}, {}
+  local batch_stage = stage
   for i, p in ipairs(points) do
+    local stage = p.stage or batch_stage
     local e = entries[keys[i]]
     if not e or e.status ~= "done" then
       failures[#failures + 1] = string.format("  %s %s (job %s): %s", stage, p.label or i, keys[i]:sub(1, 12),

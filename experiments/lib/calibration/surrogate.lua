@@ -7,6 +7,9 @@
 --   3. a simulation within the tolerance is confirmed: `confirm_seeds` further seeds at the same
 --      parameters (run even when the search budget is spent), and the mean of all of them is
 --      within the tolerance too.
+-- With warp_inputs (the input's default) each Gaussian process also fits a warping of every input
+-- (Kumaraswamy CDF; gaussian_process.hpp), for responses that change fast in one part of a range
+-- (docs/calibration.md, "The surrogate's Gaussian processes").
 local jobs = require("lib.calibration.jobs")
 local doe = require("paddy.doe")
 local M = {}
@@ -93,7 +96,8 @@ function M.run(o)
     if #evaluations >= S.budget then break end
     round = round + 1
     local s = doe.surrogate_suggest{factors = factors, data = data, responses = resp, targets = measured,
-                                    batch = math.min(o.batch, S.budget - #evaluations), seed = o.seed + round}
+                                    batch = math.min(o.batch, S.budget - #evaluations), seed = o.seed + round,
+                                    warp_inputs = S.warp_inputs}
     local list = {}
     for i, sg in ipairs(s.suggestions) do list[i] = {values = sg.factors, predicted = sg} end
     rounds[#rounds + 1] = {round = round, incumbent_error = s.incumbent_error, hyperparameters = s.hyperparameters,

@@ -12,6 +12,16 @@
 // Hyperparameters θ = (log ℓ_1..ℓ_d, log σ_f², log σ_n²) maximise the log marginal likelihood
 // (type-II maximum likelihood) with NLopt LN_BOBYQA from the centre of the box and a seeded set
 // of further starts; the box keeps the problem well posed with few points.
+//
+// Input warping (optional; Snoek, Swersky, Zemel & Adams 2014, "Input warping for Bayesian
+// optimization of non-stationary functions", ICML, PMLR 32:1674): each input passes through the
+// Kumaraswamy CDF before the kernel,
+//     w_d(x) = 1 − (1 − x^{a_d})^{b_d},   x in [0, 1],  a_d, b_d > 0,
+// which stretches the part of a range where the response changes fast (a response that is steep
+// near x = 0, like a pile's spread at vanishing cohesion, gets a < 1). a_d, b_d join θ as
+// log a_d, log b_d with the paper's log-normal prior N(0, 0.75²) on each, so they are maximum a
+// posteriori estimates: −log p(y|X,θ) + Σ_d [(log a_d)² + (log b_d)²] / (2 · 0.75²) is minimised.
+// a = b = 1 is the identity.
 #pragma once
 
 #include <Eigen/Dense>
@@ -23,6 +33,7 @@ struct GpHyperparameters {
   Eigen::VectorXd length_scales;  ///< ℓ_d, in unit-cube coordinates
   double signal_variance = 1.0;   ///< σ_f², standardised units
   double noise_variance = 1e-4;   ///< σ_n², standardised units
+  Eigen::VectorXd warp_a, warp_b; ///< Kumaraswamy warping per input; empty: none
 };
 
 struct GpFitOptions {
@@ -30,6 +41,9 @@ struct GpFitOptions {
   double min_signal = 0.05, max_signal = 20.0;
   double min_noise = 1e-6, max_noise = 1.0;
   int starts = 8;                 ///< restarts of the likelihood search (the first at the centre)
+  bool warp_inputs = false;       ///< fit a Kumaraswamy warping of each input (see above)
+  double warp_prior_sd = 0.75;    ///< sd of the log-normal prior on a_d, b_d
+  double warp_log_bound = 2.0;    ///< |log a_d|, |log b_d| at most this
   std::uint64_t seed = 1;
 };
 
@@ -53,11 +67,12 @@ class GaussianProcess {
   int dimension() const { return static_cast<int>(X_.cols()); }
   int size() const { return static_cast<int>(X_.rows()); }
 
-  double kernel(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;  ///< standardised units
+  double kernel(const Eigen::VectorXd& a, const Eigen::VectorXd& b) const;  ///< standardised units, warped inputs
+  Eigen::VectorXd warp(const Eigen::VectorXd& x) const;  ///< the inputs as the kernel sees them
 
  private:
   void factorize();
-  Eigen::MatrixXd X_;
+  Eigen::MatrixXd X_;            ///< warped inputs
   Eigen::VectorXd z_;            ///< standardised y
   double y_mean_ = 0, y_scale_ = 1;
   GpHyperparameters hyper_;
