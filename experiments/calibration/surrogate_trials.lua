@@ -47,11 +47,19 @@ local P = paddy.parameters{
   {name = "fast", default = 16, min = 1, max = 1000, description = "report how often a strategy stops within this many simulations"},
   {name = "strategies", default = "plain,warped", description = "comma-separated: plain, warped (Gaussian processes of the surrogate)"},
   {name = "emulators", default = "plain,warped", description = "comma-separated: plain, warped (Gaussian processes of the emulator)"},
+  {name = "initial_points", default = 0, min = 0, max = 100, description = "Latin-hypercube points of the surrogate (0: the input's surrogate.initial_points)"},
   {name = "holdout_sizes", default = "12,20,30", description = "held-out check: comma-separated numbers of simulations to fit on (empty: no check)"},
   {name = "holdout_repeats", default = 40, min = 0, max = 10000, description = "held-out check: random subsets per size"},
 }
 
 local input = input_file.read(P.input)
+if P.initial_points > 0 then
+  if P.initial_points < 2 or P.initial_points > input.surrogate.budget then
+    error(string.format("surrogate_trials: initial_points = %d is outside the allowed range [2, %d] (the budget)", P.initial_points,
+                        input.surrogate.budget), 0)
+  end
+  input.surrogate.initial_points = math.tointeger(P.initial_points) or error("surrogate_trials: initial_points must be a whole number", 0)
+end
 local measured, responses = input.measured, input.responses
 
 local function list(text, what, allowed)

@@ -657,6 +657,13 @@ elseif(CASE STREQUAL "surrogate_trials")
   if(NOT se MATCHES "strategies = 'fast' is not one of plain, warped")
     message(FATAL_ERROR "the refusal does not name the strategy and the allowed ones: ${se}")
   endif()
+  # More initial points than the budget is refused with the allowed range.
+  run_paddy(code se run ${SOURCE}/experiments/calibration/surrogate_trials.lua --out bad2
+            --set input=${SOURCE}/tests/calibration/mini_mud.json --set data=${WORK}/data/simulations.csv --set initial_points=9)
+  expect_code(${code} 2)
+  if(NOT se MATCHES "initial_points = 9 is outside the allowed range \\[2, 8\\] \\(the budget\\)")
+    message(FATAL_ERROR "the refusal does not name initial_points and its range: ${se}")
+  endif()
 
 elseif(CASE STREQUAL "validation_cg")
   # The coarse-graining campaign on 2 sizes x 2 seeds of tiny released columns: per-size mean and
