@@ -24,7 +24,8 @@
 -- fitted on `holdout_sizes` random simulations (as many as the surrogate has), how well they
 -- predict all the others.
 --
--- Outputs in --out: surrogate_trials_runs.csv (every trial), surrogate_trials.csv and
+-- Outputs in --out: surrogate_trials.png (with pictures: the share of trials within the tolerance
+-- against the simulations spent), surrogate_trials_runs.csv (every trial), surrogate_trials.csv and
 -- surrogate_trials.json (per emulator and strategy: successes with a 95 % Clopper-Pearson
 -- interval, simulations used, how often within `fast` simulations, the emulator's true error at
 -- the confirmed point; the strategies paired trial by trial with a sign test; the held-out
@@ -49,6 +50,7 @@ local P = paddy.parameters{
   {name = "emulators", default = "plain,warped", description = "comma-separated: plain, warped (Gaussian processes of the emulator)"},
   {name = "initial_points", default = 0, min = 0, max = 100, description = "Latin-hypercube points of the surrogate (0: the input's surrogate.initial_points)"},
   {name = "holdout_sizes", default = "12,20,30", description = "held-out check: comma-separated numbers of simulations to fit on (empty: no check)"},
+  {name = "pictures", default = true, description = "draw surrogate_trials.png (gnuplot): the share of trials within 2 % against the simulations spent"},
   {name = "holdout_repeats", default = 40, min = 0, max = 10000, description = "held-out check: random subsets per size"},
 }
 
@@ -386,4 +388,32 @@ local doc = {data = P.data, simulations = #data, noise_sd = noise_sd, tolerance 
              initial_points = input.surrogate.initial_points, confirm_seeds = input.surrogate.confirm_seeds, batch = P.batch,
              emulators = emus, summary = summary, paired = paired, holdout = holdout}
 paddy.write_json("surrogate_trials.json", doc)
-paddy.result{summary = summary, paired = paired, holdout = holdout, simulations = #data, noise_sd = noise_sd}
+
+-- Picture: for each emulator and strategy, the share of trials that had confirmed a point within
+-- the tolerance after n simulations (a trial that never did stays out of the share).
+local picture
+if P.pictures then
+  local lines, plots, nmax = {}, {}, 0
+  for _, row in ipairs(run_rows) do nmax = math.max(nmax, row[5]) end
+  for b, s in ipairs(summary) do
+    lines[#lines + 1] = string.format("# emulator %s, strategy %s: simulations, share of trials within the tolerance", s.emulator, s.strategy)
+    for n = 1, nmax do
+      local within = 0
+      for _, row in ipairs(run_rows) do
+        if row[1] == s.emulator and row[2] == s.strategy and row[4] == 1 and row[5] <= n then within = within + 1 end
+      end
+      lines[#lines + 1] = string.format("%d %.6g", n, within / s.trials)
+    end
+    lines[#lines + 1] = "\n"
+    plots[#plots + 1] = string.format("%s index %d with steps lw 2 dt %d lc rgb '%s' title %s", util.gnuplot_text(util.out("surrogate_trials.dat")),
+                                      b - 1, s.strategy == "warped" and 1 or 2, s.emulator == "warped" and "#d95f02" or "#1b9e77",
+                                      util.gnuplot_text(string.format("%s surrogate, %s emulator", s.strategy, s.emulator)))
+  end
+  util.write_file(util.out("surrogate_trials.dat"), table.concat(lines, "\n") .. "\n")
+  picture = util.gnuplot("surrogate_trials", string.format([[
+set title 'Surrogate trials: share of trials with a confirmed point within %g %%'
+set xlabel 'simulations spent (screening not counted)'; set ylabel 'share of trials'; set grid; set key bottom right
+set yrange [0:1]; set xrange [0:%d]
+plot %s]], 100 * input.tolerance, nmax + 1, table.concat(plots, ", \\\n     ")))
+end
+paddy.result{summary = summary, paired = paired, holdout = holdout, simulations = #data, noise_sd = noise_sd, picture = picture}

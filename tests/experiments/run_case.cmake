@@ -631,7 +631,7 @@ elseif(CASE STREQUAL "surrogate_trials")
             --set input=${SOURCE}/tests/calibration/mini_mud.json --set data=${WORK}/data/simulations.csv
             --set factors=H7,H5 --set trials=3 --set holdout_sizes=12 --set holdout_repeats=3)
   expect_code(${code} 0)
-  foreach(f surrogate_trials.csv surrogate_trials_runs.csv surrogate_trials.json)
+  foreach(f surrogate_trials.csv surrogate_trials_runs.csv surrogate_trials.json surrogate_trials.png)
     expect_file(${WORK}/out/${f})
   endforeach()
   run_paddy(code se run ${HERE}/check_surrogate_trials.lua --set dir=${WORK}/out --set trials=3 --out check)
