@@ -292,7 +292,7 @@ local function reference_procedure()
   -- rheometer at the optimum in the same batch: the longer vane run first, so that it runs beside
   -- the slump runs instead of alone after them.
   local V = input.verification
-  local v_points, batch, rheo_point = {}, {}, nil
+  local batch, rheo_point = {}, nil
   if input.rheometer.run then
     local rp = {particle_diameter = rheometer_diameter, pictures = P.pictures, snapshot_interval = 0, progress = false,
                 timestep_fraction = step.fraction, timestep_damping = false}
@@ -309,9 +309,8 @@ local function reference_procedure()
     batch[1] = rheo_point
   end
   for s = 1, V.seeds do
-    v_points[s] = {params = params_of(optimum.factors), values = optimum.factors, seed = seed0 + 1000 + s - 1,
-                   extra = s == 1 and P.pictures and {pictures = true} or nil, label = "seed " .. (seed0 + 1000 + s - 1)}
-    batch[#batch + 1] = v_points[s]
+    batch[#batch + 1] = {params = params_of(optimum.factors), values = optimum.factors, seed = seed0 + 1000 + s - 1,
+                         extra = s == 1 and P.pictures and {pictures = true} or nil, label = "seed " .. (seed0 + 1000 + s - 1)}
   end
   say("5. Verification: %d simulations at the optimum%s", V.seeds, rheo_point and ", and the rheometer there" or "")
   local batch_rows = runner:run("verification", batch)

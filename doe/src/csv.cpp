@@ -18,6 +18,7 @@ std::string trim(const std::string& s) {
   const auto b = s.find_last_not_of(" \t\r");
   return s.substr(a, b - a + 1);
 }
+}  // namespace
 
 std::vector<std::string> splitCsvLine(const std::string& line, const std::string& where) {
   std::vector<std::string> out;
@@ -30,12 +31,13 @@ std::vector<std::string> splitCsvLine(const std::string& line, const std::string
       else if (c == '"') quoted = false;
       else cur += c;
     } else if (c == '"') {
+      if (!wasQuoted && trim(cur).empty()) cur.clear();  // blanks before a quoted field
       quoted = wasQuoted = true;
     } else if (c == ',') {
       out.push_back(wasQuoted ? cur : trim(cur));
       cur.clear();
       wasQuoted = false;
-    } else {
+    } else if (!(wasQuoted && (c == ' ' || c == '\t' || c == '\r'))) {  // blanks after one
       cur += c;
     }
   }
@@ -43,7 +45,6 @@ std::vector<std::string> splitCsvLine(const std::string& line, const std::string
   out.push_back(wasQuoted ? cur : trim(cur));
   return out;
 }
-}  // namespace
 
 std::vector<std::string> splitList(const std::string& s, char sep) {
   std::vector<std::string> out;

@@ -35,6 +35,7 @@ local doe = require("paddy.doe")
 local input_file = require("lib.calibration.input")
 local jobs = require("lib.calibration.jobs")
 local surrogate = require("lib.calibration.surrogate")
+local score = require("lib.discovery.score")
 
 local here = paddy.script:match("^(.*)/[^/]*$") or "."
 local results = here .. "/results"
@@ -283,27 +284,9 @@ local function trial(k, emu, kind)
   return out
 end
 
--- Clopper-Pearson interval of a binomial proportion (95 %), by bisection on the beta tails.
-local function binomial_cdf(x, n, p)  -- P(X <= x)
-  local s, term = 0, (1 - p) ^ n
-  for i = 0, x do
-    s = s + term
-    term = term * (n - i) / (i + 1) * p / (1 - p)
-  end
-  return s
-end
+-- Two-sided 95 % Clopper-Pearson interval: the one-sided bounds at 2.5 % each (lib/discovery/score.lua).
 local function clopper_pearson(x, n)
-  local function solve(f)
-    local lo, hi = 0, 1
-    for _ = 1, 60 do
-      local mid = (lo + hi) / 2
-      if f(mid) then hi = mid else lo = mid end
-    end
-    return (lo + hi) / 2
-  end
-  local lower = x == 0 and 0 or solve(function(p) return 1 - binomial_cdf(x - 1, n, p) >= 0.025 end)
-  local upper = x == n and 1 or solve(function(p) return binomial_cdf(x, n, p) <= 0.025 end)
-  return lower, upper
+  return score.clopper_pearson_lower(x, n, 0.025), score.clopper_pearson_upper(x, n, 0.025)
 end
 
 local run_rows, summary = {}, {}
@@ -363,7 +346,7 @@ if #strategies == 2 then
       local m = x + y
       if m == 0 then return 1 end
       local lo = math.min(x, y)
-      return math.min(1, 2 * binomial_cdf(lo, m, 0.5))
+      return math.min(1, 2 * score.binomial_cdf(lo, m, 0.5))
     end
     local pr = {emulator = ekind, a = strategies[1], b = strategies[2], only_a = only_a, only_b = only_b, p_success = sign_p(only_a, only_b),
                 fewer_a = fewer_a, fewer_b = fewer_b, p_fewer = sign_p(fewer_a, fewer_b)}

@@ -126,37 +126,12 @@ function M.write_csv(name, columns, rows)
   return M.write_file(M.out(name), table.concat(lines, "\n") .. "\n")
 end
 
--- The cells of one CSV line: separated by commas, a cell in double quotes may hold commas and
--- doubled quotes (RFC 4180), as write_csv writes them; spaces around a cell are dropped.
-local function csv_cells(line)
-  local cells, i, n = {}, 1, #line
-  while true do
-    local cell
-    local s = line:find("[^ \t]", i) or n + 1
-    if line:sub(s, s) == '"' then
-      local parts, j = {}, s + 1
-      while true do
-        local q = line:find('"', j, true)
-        if not q then parts[#parts + 1] = line:sub(j); j = n + 1; break end
-        parts[#parts + 1] = line:sub(j, q - 1)
-        if line:sub(q + 1, q + 1) == '"' then parts[#parts + 1] = '"'; j = q + 2 else j = q + 1; break end
-      end
-      cell = table.concat(parts)
-      local comma = line:find(",", j, true)
-      i = comma and comma + 1 or n + 2
-    else
-      local comma = line:find(",", i, true)
-      cell = line:sub(i, (comma or n + 1) - 1):match("^%s*(.-)%s*$")
-      i = comma and comma + 1 or n + 2
-    end
-    cells[#cells + 1] = cell
-    if i > n + 1 then break end
-  end
-  return cells
-end
-
--- Reads a CSV file with a header line into an array of {column = number or string}.
+-- Reads a CSV file with a header line into an array of {column = number or string}. Lines are
+-- split by the design-of-experiments library's CSV reader (paddy.doe csv_fields): a field in
+-- double quotes may hold commas and doubled quotes, as write_csv writes them; blanks around an
+-- unquoted field are dropped; an unterminated quote is an error naming the file and line.
 function M.read_csv(path)
+  local doe = require("paddy.doe")
   local f, err = io.open(path, "r")
   if not f then error("cannot read CSV file '" .. path .. "': " .. tostring(err), 2) end
   local header, rows = nil, {}
@@ -165,7 +140,11 @@ function M.read_csv(path)
     line_no = line_no + 1
     line = line:gsub("\r$", "")
     if line:match("%S") and not line:match("^%s*#") then
-      local cells = csv_cells(line)
+      local ok, cells = pcall(doe.csv_fields, {line = line, where = path .. " line " .. line_no})
+      if not ok then
+        f:close()
+        error(cells, 2)
+      end
       if not header then
         header = cells
       else

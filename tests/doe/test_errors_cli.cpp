@@ -42,6 +42,19 @@ TEST_CASE("doe/errors: bad CSV cells name the row and the column", "[doe]") {
                     Catch::Contains("no column named 'C'") && Catch::Contains("available columns: A, B, y"));
 }
 
+TEST_CASE("doe/csv: quoted fields hold commas and quotes, blanks around a field are dropped", "[doe]") {
+  using V = std::vector<std::string>;
+  CHECK(splitCsvLine("1,2,3", "x") == V{"1", "2", "3"});
+  CHECK(splitCsvLine(" a , b ,", "x") == V{"a", "b", ""});
+  CHECK(splitCsvLine("1,\"run 1, replicate 2\",3", "x") == V{"1", "run 1, replicate 2", "3"});
+  CHECK(splitCsvLine("1, \"x, y\" ,3", "x") == V{"1", "x, y", "3"});         // blanks outside the quotes
+  CHECK(splitCsvLine("\"q\"\"r\",,\" kept \"", "x") == V{"q\"r", "", " kept "});  // doubled quote, inner blanks
+  CHECK_THROWS_WITH(splitCsvLine("1,\"open", "f.csv line 4"), Catch::Contains("f.csv line 4: unterminated quoted field"));
+  const Table t = parseCsv("label,y\n\"run 1, replicate 1\",2\n", "q.csv");
+  CHECK(t.cells[0][0] == "run 1, replicate 1");
+  CHECK(t.numeric("y")(0) == 2.0);
+}
+
 TEST_CASE("doe/errors: too many terms, singular designs, saturated models", "[doe]") {
   const Table t = parseCsv("A,B,C,y\n-1,-1,-1,1\n1,-1,1,2\n-1,1,1,3\n1,1,-1,4\n0,0,0,2\n", "t.csv");
   CHECK_THROWS_WITH(analyzeTable(t, request({"A", "B", "C"}, {"y"}, "quadratic")),

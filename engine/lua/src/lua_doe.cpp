@@ -2,6 +2,7 @@
 
 #include "paddy/doe/box_behnken.hpp"
 #include "paddy/doe/central_composite.hpp"
+#include "paddy/doe/csv.hpp"
 #include "paddy/doe/discovery_json.hpp"
 #include "paddy/doe/error.hpp"
 #include "paddy/doe/factorial.hpp"
@@ -269,6 +270,19 @@ Eigen::MatrixXd unitPoints(const json& rows, const std::vector<Factor>& f, const
   return X;
 }
 
+// Rows' values of the responses → one column per response.
+Eigen::MatrixXd responseColumns(const json& rows, const std::vector<std::string>& responses) {
+  Eigen::MatrixXd Y(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(responses.size()));
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string where = "data row " + std::to_string(i + 1);
+    for (std::size_t r = 0; r < responses.size(); ++r) {
+      if (!rows[i].contains(responses[r])) throw DoeError(where + ": missing value for '" + responses[r] + "'");
+      Y(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(r)) = number(rows[i][responses[r]], where + ", " + responses[r]);
+    }
+  }
+  return Y;
+}
+
 json hyperJson(const GpHyperparameters& h, const std::vector<Factor>& f) {
   json jh{{"signal_variance", h.signal_variance}, {"noise_variance", h.noise_variance}};
   for (std::size_t j = 0; j < f.size(); ++j) {
@@ -302,6 +316,13 @@ GpHyperparameters hyperFromJson(const json& j, const std::vector<Factor>& f) {
   return h;
 }
 
+// csv_fields{line = "...", where = "file line N"} → the fields of one CSV line (csv.hpp: quoted
+// fields may hold commas and doubled quotes; an unterminated quote is an error naming `where`).
+json csvFields(const json& o) {
+  if (!o.contains("line") || !o["line"].is_string()) throw DoeError("line = text is required");
+  return splitCsvLine(o["line"].get<std::string>(), o.value("where", std::string("<csv>")));
+}
+
 // gaussian_process{factors = {{name =, low =, high =}, ...}, data = {rows}, response = name,
 //                  warp_inputs = false, seed = 1, hyperparameters = (as returned: fixed, not fitted),
 //                  points = {rows}} → {hyperparameters =, log_likelihood =,
@@ -312,11 +333,7 @@ json gaussianProcess(const json& o) {
   if (response.empty()) throw DoeError("response = name is required");
   if (!o.contains("data")) throw DoeError("data must be an array of rows");
   const Eigen::MatrixXd X = unitPoints(o["data"], f, "data");
-  Eigen::VectorXd y(X.rows());
-  for (std::size_t i = 0; i < o["data"].size(); ++i) {
-    if (!o["data"][i].contains(response)) throw DoeError("data row " + std::to_string(i + 1) + ": missing value for '" + response + "'");
-    y(static_cast<Eigen::Index>(i)) = number(o["data"][i][response], "data row " + std::to_string(i + 1) + ", " + response);
-  }
+  const Eigen::VectorXd y = responseColumns(o["data"], {response}).col(0);
   GaussianProcess gp;
   if (o.contains("hyperparameters") && !o["hyperparameters"].is_null()) {
     gp.fitFixed(X, y, hyperFromJson(o["hyperparameters"], f));
@@ -354,14 +371,7 @@ json surrogate(const json& o) {
   if (!o.contains("data") || !o["data"].is_array()) throw DoeError("data must be an array of rows");
   const auto& data = o["data"];
   const Eigen::MatrixXd X = unitPoints(data, f, "data");
-  Eigen::MatrixXd Y(static_cast<Eigen::Index>(data.size()), static_cast<Eigen::Index>(responses.size()));
-  for (std::size_t i = 0; i < data.size(); ++i) {
-    const std::string where = "data row " + std::to_string(i + 1);
-    for (std::size_t r = 0; r < responses.size(); ++r) {
-      if (!data[i].contains(responses[r])) throw DoeError(where + ": missing value for '" + responses[r] + "'");
-      Y(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(r)) = number(data[i][responses[r]], where + ", " + responses[r]);
-    }
-  }
+  const Eigen::MatrixXd Y = responseColumns(data, responses);
   SurrogateOptions so;
   so.batch = o.value("batch", 1);
   so.samples = o.value("samples", so.samples);
@@ -442,6 +452,7 @@ int lOptimize(lua_State* L) { return wrap<optimize>(L, "optimize"); }
 int lSteepest(lua_State* L) { return wrap<steepest>(L, "steepest_ascent"); }
 int lSurrogate(lua_State* L) { return wrap<surrogate>(L, "surrogate_suggest"); }
 int lGaussianProcess(lua_State* L) { return wrap<gaussianProcess>(L, "gaussian_process"); }
+int lCsvFields(lua_State* L) { return wrap<csvFields>(L, "csv_fields"); }
 // Naming a missing effect (discovery_json.hpp).
 int lNoiseCovariance(lua_State* L) { return wrap<noiseCovarianceJson>(L, "noise_covariance"); }
 int lDiagnose(lua_State* L) { return wrap<diagnoseJson>(L, "diagnose"); }
@@ -462,6 +473,7 @@ extern "C" int luaopen_paddy_doe(lua_State* L) {
                                  {"steepest_ascent", paddy::doe::lSteepest},
                                  {"surrogate_suggest", paddy::doe::lSurrogate},
                                  {"gaussian_process", paddy::doe::lGaussianProcess},
+                                 {"csv_fields", paddy::doe::lCsvFields},
                                  {"noise_covariance", paddy::doe::lNoiseCovariance},
                                  {"diagnose", paddy::doe::lDiagnose},
                                  {"gauss_newton", paddy::doe::lGaussNewton},

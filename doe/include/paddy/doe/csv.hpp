@@ -25,6 +25,9 @@ struct Table {
   Eigen::VectorXd numeric(const std::string& name) const;
 };
 
+/// The fields of one CSV line (quotes and blanks as above); `where` names the line in the error
+/// of an unterminated quoted field.
+std::vector<std::string> splitCsvLine(const std::string& line, const std::string& where);
 Table parseCsv(const std::string& text, const std::string& source = "<csv>");
 Table readCsv(const std::string& path);
 
