@@ -23,6 +23,31 @@ function(expect_code actual expected)
   endif()
 endfunction()
 
+# expect_refusals(<args var> <dir> <setting> <regex> [<dir> <setting> <regex> ...]): for each triple,
+# runs ${PADDY} with the arguments in the list variable <args var> plus --out <dir> --set <setting>
+# and expects a refusal (exit code 2) whose message matches <regex>.
+function(expect_refusals args_var)
+  set(cases ${ARGN})
+  list(LENGTH cases n)
+  math(EXPR rest "${n} % 3")
+  if(n EQUAL 0 OR NOT rest EQUAL 0)
+    message(FATAL_ERROR "expect_refusals: needs triples of dir, setting and pattern, got ${n} values")
+  endif()
+  math(EXPR last "${n} - 3")
+  foreach(k RANGE 0 ${last} 3)
+    math(EXPR k1 "${k} + 1")
+    math(EXPR k2 "${k} + 2")
+    list(GET cases ${k} dir)
+    list(GET cases ${k1} setting)
+    list(GET cases ${k2} pattern)
+    run_paddy(code se ${${args_var}} --out ${dir} --set ${setting})
+    expect_code(${code} 2)
+    if(NOT se MATCHES "${pattern}")
+      message(FATAL_ERROR "${setting}: expected a refusal with '${pattern}', got: ${se}")
+    endif()
+  endforeach()
+endfunction()
+
 # result_json(GET|LENGTH <dir> <var> path...): results.<path...> of ${WORK}/<dir>/result.json
 # (GET: the value, LENGTH: the array's length) into `var`; fatal if missing.
 function(result_json op dir var)

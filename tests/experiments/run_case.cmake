@@ -562,18 +562,36 @@ elseif(CASE STREQUAL "validation_ys_resolution")
   file(APPEND ${WORK}/check.lua "local sg, r = ${sg}, ${r}\nassert(math.abs(vg / sg - r) <= 1e-12 * math.abs(r), 'ratio at the grain')\npaddy.result{ok = true}\n")
   run_paddy(code se run ${WORK}/check.lua --out chk)
   expect_code(${code} 0)
-  foreach(bad "one;rheometer_diameters=0.02,0.02;at least 2 distinct diameters"
-              "big;rheometer_diameters=0.02,0.03;rheometer_diameters: 0.03 m is outside the allowed range")
-    list(GET bad 0 dir)
-    list(GET bad 1 setting)
-    list(GET bad 2 pattern)
-    run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress_resolution.lua --out ${dir} --threads 1 ${tiny}
-              --set ${setting})
-    expect_code(${code} 2)
-    if(NOT se MATCHES "${pattern}")
-      message(FATAL_ERROR "${setting}: expected a refusal with '${pattern}', got: ${se}")
-    endif()
+  set(args run ${SOURCE}/experiments/validation/yield_stress_resolution.lua --threads 1 ${tiny})
+  expect_refusals(args one rheometer_diameters=0.02,0.02 "at least 2 distinct diameters"
+                       big rheometer_diameters=0.02,0.03 "rheometer_diameters: 0.03 m is outside the allowed range")
+
+elseif(CASE STREQUAL "validation_lift_speed")
+  # The slump's yield stress against the cone lift speed on tiny runs (40 mm spheres, two sets, lifts
+  # at 0.3, 0.2 and 0.1 m/s, 2 seeds): every run finishes at rest, lifted at its own speed (slump.lua's
+  # cone lift over its lift time) within its time limit (cone height / speed + rest_margin), and the
+  # study's means, factors, halving changes and lines are those of its runs (check_lift_speed.lua).
+  # One speed, a speed out of range, a test speed not among the speeds and a lift speed in slump_set
+  # are refused with the parameter and its range.
+  set(tiny --set values=0.02,0.1 --set lift_speeds=0.3,0.2,0.1 --set test_speed=0.3 --set seeds=1,2
+      --set slump_diameter=0.04 --set rest_margin=1 --set code_version=test)
+  run_paddy(code se run ${SOURCE}/experiments/validation/slump_lift_speed.lua --out out --threads 1 ${tiny})
+  expect_code(${code} 0)
+  foreach(f lift_speed_runs.csv lift_speed_summary.csv lift_speed_sets.csv lift_speed.json lift_speed.png)
+    expect_file(${WORK}/out/${f})
   endforeach()
+  result(failed failed)
+  expect_number(${failed} EQUAL 0 "failed runs")
+  result(left left_out)
+  expect_number(${left} EQUAL 0 "runs left out")
+  run_paddy(code se run ${HERE}/check_lift_speed.lua --out chk --set dir=${WORK}/out --set speeds=0.3,0.2,0.1
+            --set test_speed=0.3 --set values=0.02,0.1 --set seeds=1,2 --set rest_margin=1)
+  expect_code(${code} 0)
+  set(args run ${SOURCE}/experiments/validation/slump_lift_speed.lua --threads 1 ${tiny})
+  expect_refusals(args one lift_speeds=0.3 "needs at least 2 speeds"
+                       slow lift_speeds=0.3,0.0005 "0.0005 m/s is outside the allowed range \\[0.001, 2\\] m/s"
+                       test lift_speeds=0.2,0.1 "test_speed = 0.3 m/s is not one of lift_speeds"
+                       set slump_set=lift_speed=0.1 "slump_set must not set lift_speed")
 
 elseif(CASE STREQUAL "rheometer_confirm")
   # rheometer_mini's run with steady_confirm: a step is steady only when the stretch of
@@ -722,17 +740,9 @@ elseif(CASE STREQUAL "tack_mini")
   expect_code(${code} 0)
   result_json(GET check ok ok)
   # Bad input: a pull speed outside its range, a plate wider than the cup allows.
-  foreach(bad "speed;pull_speed=0;parameter 'pull_speed' = 0 m/s is outside the allowed range"
-              "plate;plate_diameter=0.05;plate_diameter = 0.05 m: .*allowed plate_diameter <= cup_diameter - 2 particle_diameter = 0.044 m")
-    list(GET bad 0 dir)
-    list(GET bad 1 setting)
-    list(GET bad 2 pattern)
-    run_paddy(code se run ${tack_mini_args} --out ${dir} --set ${setting})
-    expect_code(${code} 2)
-    if(NOT se MATCHES "${pattern}")
-      message(FATAL_ERROR "${setting}: expected a refusal with '${pattern}', got: ${se}")
-    endif()
-  endforeach()
+  set(args run ${tack_mini_args})
+  expect_refusals(args speed pull_speed=0 "parameter 'pull_speed' = 0 m/s is outside the allowed range"
+                       plate plate_diameter=0.05 "plate_diameter = 0.05 m: .*allowed plate_diameter <= cup_diameter - 2 particle_diameter = 0.044 m")
 
 else()
   message(FATAL_ERROR "unknown case ${CASE}")
