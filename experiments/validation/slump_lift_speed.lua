@@ -83,9 +83,10 @@ local jobs = {}
 for _, value in ipairs(values) do
   for _, v in ipairs(speeds) do
     for _, s in ipairs(seeds) do
+      local max_time = time_limit(v)
       local params = ys_jobs.params(P.slump_diameter, P.parameter, value,
-                                    report.merge(slump_extra, {lift_speed = v, max_time = time_limit(v)}))
-      jobs[#jobs + 1] = {value = value, speed = v, seed = s,
+                                    report.merge(slump_extra, {lift_speed = v, max_time = max_time}))
+      jobs[#jobs + 1] = {value = value, speed = v, seed = s, max_time = max_time,
                          key = c:submit{script = dir .. "/../slump.lua", params = params, seed = s}}
     end
   end
@@ -96,11 +97,11 @@ local results = c:run()
 
 -- Per run. A run not at rest at its time limit, or without a yield stress, is listed and left out.
 local runs, failed, left_out = {}, 0, 0
-local tau = {}  -- tau[value][speed][seed]
+local kept = {}  -- kept[value][speed][seed] = the run's row, for runs at rest with a yield stress
 for i, run in ipairs(results) do
   local j = jobs[i]
   local row = {set = string.format("%s = %g", P.parameter, j.value), value = j.value, lift_speed_m_s = j.speed, seed = j.seed,
-               max_time_s = time_limit(j.speed)}
+               max_time_s = j.max_time}
   if run.status == "done" then
     local r = run.result
     row.particles, row.slump_mm, row.slump_flow_mm, row.yield_stress_Pa = r.particles, r.slump_mm, r.slump_flow_mm, r.yield_stress_Pa
@@ -109,9 +110,9 @@ for i, run in ipairs(results) do
     row.cone_force_mean_N = r.cone_force_N and r.cone_force_N.mean
     row.wall_s = run.metadata and run.metadata.wall_time
     if r.at_rest and type(r.yield_stress_Pa) == "number" then
-      tau[j.value] = tau[j.value] or {}
-      tau[j.value][j.speed] = tau[j.value][j.speed] or {}
-      tau[j.value][j.speed][j.seed] = r.yield_stress_Pa
+      kept[j.value] = kept[j.value] or {}
+      kept[j.value][j.speed] = kept[j.value][j.speed] or {}
+      kept[j.value][j.speed][j.seed] = row
     else
       left_out = left_out + 1
       io.stderr:write(string.format("slump_lift_speed: %s, %g m/s, seed %d: %s; left out\n", row.set, j.speed, j.seed,
@@ -125,33 +126,32 @@ for i, run in ipairs(results) do
   runs[#runs + 1] = row
 end
 
--- Per-seed ratios and differences between two speeds of one set: only seeds that have both.
-local function paired(value, va, vb, f)
-  local out = {}
-  local a, b = (tau[value] or {})[va] or {}, (tau[value] or {})[vb] or {}
+-- The kept runs of one set and speed, by seed (nil where a seed's run was left out).
+local function kept_at(value, v) return (kept[value] or {})[v] or {} end
+-- Their yield stresses, in seed order.
+local function values_of(value, v)
+  local out, at = {}, kept_at(value, v)
   for _, s in ipairs(seeds) do
-    if a[s] and b[s] then out[#out + 1] = f(a[s], b[s]) end
+    if at[s] then out[#out + 1] = at[s].yield_stress_Pa end
   end
   return out
 end
-local function values_of(value, v)
-  local out = {}
+-- Per-seed ratios and differences of the yield stress between two speeds of one set: only seeds that have both.
+local function paired(value, va, vb, f)
+  local out, a, b = {}, kept_at(value, va), kept_at(value, vb)
   for _, s in ipairs(seeds) do
-    local t = ((tau[value] or {})[v] or {})[s]
-    if t then out[#out + 1] = t end
+    if a[s] and b[s] then out[#out + 1] = f(a[s].yield_stress_Pa, b[s].yield_stress_Pa) end
   end
   return out
 end
 
--- Per set and speed.
-local summary = {}
-for _, value in ipairs(values) do
+-- Per set and speed; the picture's means (set index, speed in mm/s, mean yield stress).
+local summary, means = {}, {}
+for k, value in ipairs(values) do
   for _, v in ipairs(speeds) do
-    local slumps, flows = {}, {}
-    for _, r in ipairs(runs) do
-      if r.value == value and r.lift_speed_m_s == v and r.at_rest and r.yield_stress_Pa then
-        slumps[#slumps + 1], flows[#flows + 1] = r.slump_mm, r.slump_flow_mm
-      end
+    local slumps, flows, at = {}, {}, kept_at(value, v)
+    for _, s in ipairs(seeds) do
+      if at[s] then slumps[#slumps + 1], flows[#flows + 1] = at[s].slump_mm, at[s].slump_flow_mm end
     end
     local t = values_of(value, v)
     local tm, ts = report.mean_std(t)
@@ -163,6 +163,7 @@ for _, value in ipairs(values) do
                              slump_mm = sm, slump_std_mm = ss, slump_flow_mm = fm, slump_flow_std_mm = fs,
                              yield_stress_Pa = tm, yield_stress_std_Pa = ts,
                              factor_to_test_speed = fm_, factor_std = fs_, factor_pairs = #fac}
+    if #t > 0 then means[#means + 1] = {k, 1000 * v, tm} end
   end
 end
 
@@ -232,14 +233,6 @@ if P.pictures then
   end
   if #data > 0 then
     util.write_columns("lift_speed.dat", "set lift_speed_mm_s tau_Pa", data)
-    local means = {}
-    for _, r in ipairs(summary) do
-      if r.runs > 0 then
-        for k, value in ipairs(values) do
-          if value == r.value then means[#means + 1] = {k, 1000 * r.lift_speed_m_s, r.yield_stress_Pa} end
-        end
-      end
-    end
     util.write_columns("lift_speed_means.dat", "set lift_speed_mm_s mean_tau_Pa", means)
     local tics = {}
     for _, v in ipairs(speeds) do tics[#tics + 1] = string.format("'%g' %g", 1000 * v, 1000 * v) end
