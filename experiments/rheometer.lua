@@ -32,6 +32,7 @@ local trigger = require("lib.trigger")
 local phase = require("lib.phase")
 local chart = require("lib.chart")
 local measure = require("paddy.measure")
+local vane_stress = require("lib.vane_stress")
 
 local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "particle_diameter", default = 0.008, unit = "m", min = 0.001, max = 0.04,
@@ -52,6 +53,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "steady_confirm", default = false, description = "steady criterion: the stretch of steady_windows windows before the compared one must pass the criterion too, with a mean within 2 standard errors of it (a step cannot end in one chance quiet stretch of a stick-slip torque)"},
   {name = "fit_unsteady", default = false, description = "fit Herschel-Bulkley to the steps that did not become steady too (the fit then says so)"},
   {name = "startup_rpm", default = 5, unit = "rpm", min = 0, max = 100, description = "start-up (stress-growth) test before the sweep at this speed (0: none)"},
+  {name = "startup_stress_every", default = 1, unit = "deg", min = 0, max = 360, description = "during the start-up, measure the stresses on the vane's sheared surface from the contact forces every this many degrees (lib/vane_stress.lua; 0: not)"},
   {name = "startup_angle", default = 90, unit = "deg", min = 1, max = 3600, description = "rotation of the start-up test"},
   {name = "sample_interval", default = 0.005, unit = "s", min = 1e-5, max = 1, description = "torque sampling interval (shorter at high speed: at least samples_per_window per window)"},
   {name = "samples_per_window", default = 10, type = "integer", min = 1, max = 1000, description = "torque samples per window at least"},
@@ -67,6 +69,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
   {name = "insert_time", default = 0.05, unit = "s", min = 0, max = 5, description = "settling after the vane is inserted"},
+  {name = "fill_only", default = false, description = "stop once the vane is in: the fill and the stress state around the vane (fill_stress: lib/vane_stress.lua), no torque; the fill is the one a full run with the same parameters and seed starts from"},
   {name = "measured_csv", default = "", description = "measured torque CSV (speed_rpm,torque_Nm) for relative errors ('' = none)"},
   {name = "snapshot_interval", default = 0.25, unit = "s", min = 0, max = 10, description = "snapshots for ParaView (0: none)"},
   {name = "pictures", default = true, description = "draw PNG pictures with gnuplot"},
@@ -80,7 +83,7 @@ for k = 2, #speeds do
   if not (speeds[k] > speeds[k - 1]) then error("speeds_rpm = " .. P.speeds_rpm .. ": the speeds must increase strictly") end
 end
 if #speeds > 0 and speeds[1] <= 0 then error(string.format("speeds_rpm = %s: every speed must be > 0 rpm", P.speeds_rpm)) end
-if #speeds == 0 and P.startup_rpm == 0 then error("speeds_rpm is empty and startup_rpm = 0: nothing to measure") end
+if #speeds == 0 and P.startup_rpm == 0 and not P.fill_only then error("speeds_rpm is empty and startup_rpm = 0: nothing to measure (or fill_only = true)") end
 local seed = P.seed > 0 and P.seed or paddy.seed
 local R_cup, R_vane = P.cup_diameter / 2, P.vane_diameter / 2
 local z_vane = P.vane_bottom
@@ -165,6 +168,41 @@ local vane_geometry = {diameter = P.vane_diameter, height = P.vane_height, cup_d
 -- 3. The vane at rest for insert_time, then the start-up test and the speed steps; each runs at a
 -- constant speed (sim:set_motion) and samples the resisting torque −T·ẑ against the angle turned.
 if P.insert_time > 0 then phase.run(sim, {duration = P.insert_time, snapshot_every = snapshot_every, progress = P.progress}) end
+-- The stress state the vane starts in, from the contact forces (the overburden of its depth).
+local vane_dims = {diameter = P.vane_diameter, height = P.vane_height, bottom = z_vane, shaft_radius = shaft_r,
+                   cup_diameter = P.cup_diameter, sheared_ends = 2, wall = vane}
+local STRESS_PEAK_WINDOW = 2  -- deg either side of the peak: the start-up's stresses there are averaged
+local fill_stress = vane_stress.measure(sim, vane_dims)
+-- What a run reports about its fill, with or without the torque measurements.
+local fill_fields = {
+  vane = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2,
+          bottom = z_vane, torque_factor_m3 = measure.vane_torque_factor(vane_geometry)},
+  fill_level = P.fill_level, cup_height = P.cup_height,
+  mud_density = P.mud_density,        -- particle density; × fill_solid_fraction = bulk density of the fill
+  particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed, packing = P.packing,
+  fill_solid_fraction = fill_solid,   -- sphere volume / cup volume below fill_level, before the vane goes in
+  fill_stress = fill_stress,          -- around the vane as it starts (lib/vane_stress.lua)
+  hopper_height_m = poured and poured.hopper_height or nil,
+  fill_structure = structure,
+  settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
+  material = P.material_info,  -- conventions and material set used, with their source (lib/mud.lua)
+  coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
+                     scaled_params = cg.params, changed = cg.changed, rows = cg.rows},
+}
+-- The result: the fill's fields and `extra`.
+local function result(extra)
+  for k, v in pairs(extra) do fill_fields[k] = v end
+  paddy.result(fill_fields)
+end
+if P.fill_only then
+  result({simulated_time_s = sim:time(), wall_time_s = os.difftime(os.time(), wall_start)})
+  print("model       " .. mud.describe(P))
+  print(string.format("fill        %d spheres, solid fraction %.3f; around the vane: sigma_v %.1f Pa at mid-height, sigma_rr %.1f Pa "
+                      .. "on the blade tips' cylinder (K = %.3f), sigma_zz %.1f / %.1f Pa at the top / bottom edge",
+                      particles, fill_solid, fill_stress.sigma_v_Pa, fill_stress.sigma_rr_Pa, fill_stress.lateral_ratio or 0 / 0,
+                      fill_stress.sigma_zz_top_Pa, fill_stress.sigma_zz_bottom_Pa))
+  return
+end
 local t_start = sim:time()
 local PHASE_CODE = {startup = 0, up = 1, down = 2}
 local current_phase
@@ -179,15 +217,18 @@ local criterion = {window_angle = math.rad(P.window_angle), windows = P.steady_w
                    alpha = P.trend_alpha, drift_tolerance = P.drift_tolerance}
 
 -- Turns the vane at `rpm` for `duration`, sampling the angle [rad from the phase start] and the
--- torque every `every` seconds (stop_when(step sampler) → a trigger that ends it early); returns
--- the angles, torques, start and end time.
-local function turn(rpm, duration, every, phase_name, stop_when)
+-- torque every `every` seconds (stop_when(step sampler) → a trigger that ends it early; on_sample(s,
+-- angle) → called at every sample); returns the angles, torques, start and end time.
+local function turn(rpm, duration, every, phase_name, stop_when, on_sample)
   sim:set_motion(vane, {type = "rotate", point = {0, 0, z_vane}, axis = {0, 0, 1}, speed = measure.rpm_to_rad(rpm)})
   local a0 = sim:wall_pose(vane).angle
   local step = sampler.new{{"angle", function(s) return s:wall_pose(vane).angle - a0 end}, {"torque", resisting_torque}}
   current_phase = phase_name
   local run = phase.run(sim, {duration = duration, every = every, snapshot_every = snapshot_every, progress = P.progress,
-                              before = function(s) s:record_wall_loads(vane) end, sample = {step, torque_log},
+                              before = function(s)
+                                s:record_wall_loads(vane)
+                                if on_sample then on_sample(s, s:wall_pose(vane).angle - a0) end
+                              end, sample = {step, torque_log},
                               stop = stop_when and stop_when(step)})
   return step:column("angle"), step:column("torque"), run.t0 - t_start, run.t1 - t_start
 end
@@ -197,11 +238,26 @@ local startup
 if P.startup_rpm > 0 then
   local w = measure.rpm_to_rad(P.startup_rpm)
   local angle_max = math.rad(P.startup_angle)
-  local angles, torques = turn(P.startup_rpm, angle_max / w, math.min(P.sample_interval, math.rad(0.25) / w), "startup")
+  -- The stresses on the sheared surface every startup_stress_every degrees (side: σ_rr and the
+  -- resisting shear −τ_rθ on the blade tips' cylinder; σ_n as lib/vane_stress.lua weights it).
+  local stress_rows, next_deg = {}, 0
+  local function on_sample(s, angle)
+    if math.deg(angle) + 1e-9 < next_deg then return end
+    local st = vane_stress.measure(s, vane_dims)
+    stress_rows[#stress_rows + 1] = {math.deg(angle), st.sigma_rr_Pa, -st.shear_rtheta_Pa, st.sigma_zz_top_Pa, st.sigma_zz_bottom_Pa,
+                                     st.sheared_normal_Pa}
+    next_deg = next_deg + P.startup_stress_every
+  end
+  local angles, torques = turn(P.startup_rpm, angle_max / w, math.min(P.sample_interval, math.rad(0.25) / w), "startup", nil,
+                               P.startup_stress_every > 0 and on_sample or nil)
   local su = measure.vane_startup{vane = vane_geometry, angle = angles, torque = torques}
   startup = {speed_rpm = P.startup_rpm, angle_deg = math.deg(angles[#angles]), peak_torque_Nm = su.peak_torque,
              peak_angle_deg = math.deg(su.peak_angle), peak_reached = su.peak_reached, final_torque_Nm = su.final_torque,
              yield_stress_Pa = su.yield_stress, samples = #angles}
+  if #stress_rows > 0 then
+    util.write_columns("startup_stress.dat", "angle_deg sigma_rr_Pa shear_side_Pa sigma_zz_top_Pa sigma_zz_bottom_Pa sigma_n_Pa", stress_rows)
+    startup.stress_at_peak = vane_stress.at_peak(stress_rows, startup.peak_angle_deg, STRESS_PEAK_WINDOW, vane_dims, su.peak_torque)
+  end
   local rows = {}
   for k = 1, #angles do rows[k] = {math.deg(angles[k]), torques[k], su.smoothed[k]} end
   util.write_columns("startup.dat", "angle_deg torque_Nm smoothed_torque_Nm (start-up at " .. P.startup_rpm .. " rpm)", rows)
@@ -428,7 +484,7 @@ if P.pictures then
   end
 end
 
-paddy.result{
+result({
   -- Up-sweep, aligned with speeds_rpm: the steady torque (mean of the compared windows) and
   -- whether the step became steady; details per step in steps (down_sweep likewise).
   speeds_rpm = speeds,
@@ -448,23 +504,11 @@ paddy.result{
   fit_warning = fit_warning,
   rate_dependent_share = rate_share,    -- K D_max^n / (tau0 + K D_max^n) of the fit (lib/rheology.lua)
   comparison = comparison,
-  vane = {diameter = P.vane_diameter, height = P.vane_height, cup_diameter = P.cup_diameter, sheared_ends = 2,
-          bottom = z_vane, torque_factor_m3 = measure.vane_torque_factor(vane_geometry)},
-  fill_level = P.fill_level, cup_height = P.cup_height,
-  mud_density = P.mud_density,        -- particle density; × fill_solid_fraction = bulk density of the fill
-  particles = particles, filled = filled, struck_off = struck, removed_for_vane = removed, packing = P.packing,
-  fill_solid_fraction = fill_solid,   -- sphere volume / cup volume below fill_level, before the vane goes in
-  hopper_height_m = poured and poured.hopper_height or nil,
-  fill_structure = structure,
-  settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),
-  material = P.material_info,  -- conventions and material set used, with their source (lib/mud.lua)
-  coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
-                     scaled_params = cg.params, changed = cg.changed, rows = cg.rows},
   pictures = pictures,
   torque_csv = util.out("vane_loads.csv"),
-}
+})
 
 -- What the user sees on stdout at the end.
 print("model       " .. mud.describe(P))

@@ -3,6 +3,7 @@
 -- which rheometer.lua requires) so that a change here does not change the rheometer's job keys
 -- (docs/campaign.md: a job's key hashes the modules its script requires).
 local line_fit = require("lib.line_fit")
+local util = require("lib.util")
 
 local M = {}
 
@@ -39,6 +40,56 @@ function M.fit(args)
   local line = line_fit.fit{x = x, y = y, what = "mohr_coulomb.fit"}
   return {c = line.a, tan_phi = line.b, n = n, dof = line.dof, residuals = line.residuals, sigma_mean = xm, r2 = line.r2,
           se_c = line.se_a, se_tan_phi = line.se_b}
+end
+
+-- One parameter set's depth series as Mohr–Coulomb lines: per seed and pooled over the seeds, and
+-- the intercept c against the slump's yield stress. args: points = {{seed =, sigma =, tau =}, ...},
+-- slump_of = {[seed] = τ_slump} (may lack seeds), slump_mean = the set's mean τ_slump (or nil),
+-- target = the agreement band (|c / τ_slump − 1| ≤ target). A fit that cannot be made (M.fit's
+-- refusals) is reported as its error, not raised. c counts as determined when the pooled fit puts
+-- it at least 2 standard errors above 0; only then can it be within the target.
+-- → {per_seed = {{seed, fit, fit_error, slump_yield_stress_Pa, c_over_slump}, ...} (seeds ascending),
+--    pooled =, pooled_error =, c_Pa = {mean, std, values}, c_over_slump = {mean, std, values},
+--    pooled_c_over_slump =, c_determined =, c_within_target =}
+function M.envelope(args)
+  local function fit_or_error(sig, tau)
+    local ok, f = pcall(M.fit, {sigma = sig, tau = tau})
+    if ok then return f end
+    return nil, tostring(f)
+  end
+  local function summary(v) return {mean = util.mean(v), std = util.std(v), values = v} end
+  local by_seed, seeds, all_s, all_t = {}, {}, {}, {}
+  for _, p in ipairs(args.points) do
+    if not by_seed[p.seed] then
+      by_seed[p.seed] = {sig = {}, tau = {}}
+      seeds[#seeds + 1] = p.seed
+    end
+    local b = by_seed[p.seed]
+    b.sig[#b.sig + 1], b.tau[#b.tau + 1] = p.sigma, p.tau
+    all_s[#all_s + 1], all_t[#all_t + 1] = p.sigma, p.tau
+  end
+  table.sort(seeds)
+  local out = {per_seed = {}}
+  local cs, ratios = {}, {}
+  for _, s in ipairs(seeds) do
+    local f, why = fit_or_error(by_seed[s].sig, by_seed[s].tau)
+    local tau_slump = args.slump_of and args.slump_of[s]
+    local e = {seed = s, fit = f, fit_error = why, slump_yield_stress_Pa = tau_slump}
+    if f then
+      cs[#cs + 1] = f.c
+      if tau_slump then
+        e.c_over_slump = f.c / tau_slump
+        ratios[#ratios + 1] = e.c_over_slump
+      end
+    end
+    out.per_seed[#out.per_seed + 1] = e
+  end
+  out.pooled, out.pooled_error = fit_or_error(all_s, all_t)
+  out.c_Pa, out.c_over_slump = summary(cs), summary(ratios)
+  if out.pooled and args.slump_mean then out.pooled_c_over_slump = out.pooled.c / args.slump_mean end
+  out.c_determined = out.pooled ~= nil and out.pooled.se_c ~= nil and out.pooled.c > 2 * out.pooled.se_c
+  out.c_within_target = out.c_determined and #ratios > 0 and math.abs(out.c_over_slump.mean - 1) <= args.target
+  return out
 end
 
 -- Mean vertical stress at depth `depth` below a free surface under the bulk density

@@ -23,8 +23,11 @@
 -- and tanφ; c counts as determined (and can be within target) when the pooled c > 2 se(c). Also
 -- the shallowest level's τ_vane / τ_slump. The columns of ys_runs.csv then hold the vane at
 -- reference_fill_level. With janssen_lateral_ratio = K > 0 also the fit against Janssen's
--- σ_v (the cup wall carrying part of the weight; lib/mohr_coulomb.lua). Extra outputs:
--- ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
+-- σ_v (the cup wall carrying part of the weight; lib/mohr_coulomb.lua). When the vanes measured
+-- the stresses on their sheared surface during the start-up (rheometer.lua startup_stress_every,
+-- lib/vane_stress.lua) also the lines at failure, from the contact forces at the peak: τ_peak against
+-- the torque-weighted normal stress σ_n there ("failure"), and the side's own shear stress against
+-- its normal stress σ_rr ("side"). Extra outputs: ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
 local util = require("lib.util")
 local mohr_coulomb = require("lib.mohr_coulomb")
 local report = require("report")
@@ -195,6 +198,7 @@ util.write_csv("ys_summary.csv", {"set", "value", "seeds", "vane_Pa", "vane_std_
 -- The depth series: per set the Mohr–Coulomb line of the vane's peak stress against the overburden
 -- at the blades' mid-height, per seed and pooled; c / τ_slump; the shallowest level against the slump.
 local depth_runs, depth = {}, nil
+local measured_at_peak = false  -- some vane measured its stresses at the peak
 if fill_levels then
   depth = {fill_levels = fill_levels, reference_fill_level = reference_fill and P.reference_fill_level or nil, sets = {}}
   local drows, frows = {}, {}
@@ -227,6 +231,14 @@ if fill_levels then
               depth = z, janssen = {lateral_ratio = P.janssen_lateral_ratio, wall_friction = P.janssen_wall_friction,
                                     radius = v.vane.cup_diameter / 2}}
             sigj[#sigj + 1], pooled_j[#pooled_j + 1] = row.sigma_janssen_Pa, row.sigma_janssen_Pa
+          end
+          local at_peak = v.startup.stress_at_peak  -- measured on the sheared surface at the peak
+          if at_peak then
+            measured_at_peak = true
+            row.sigma_n_start_Pa = v.fill_stress and v.fill_stress.sheared_normal_Pa
+            row.sigma_v_measured_Pa = v.fill_stress and v.fill_stress.sigma_v_Pa
+            row.sigma_n_peak_Pa, row.sigma_rr_peak_Pa = at_peak.sigma_n_Pa, at_peak.sigma_rr_Pa
+            row.shear_side_peak_Pa, row.side_torque_share = at_peak.shear_side_Pa, at_peak.side_torque_share
           end
           row.particles = v.particles
           row.peak_torque_Nm = v.startup.peak_torque_Nm
@@ -294,17 +306,48 @@ if fill_levels then
                          report.cell(ds.janssen and ds.janssen.c_over_slump.mean),
                          report.cell(ds.janssen and ds.janssen.c_over_slump.std)}
   end
+  -- The lines at failure, from the stresses measured at the peak (lib/mohr_coulomb.lua envelope).
+  local AT_PEAK = {{name = "failure", sigma = "sigma_n_peak_Pa", tau = "vane_yield_stress_Pa"},
+                   {name = "side", sigma = "sigma_rr_peak_Pa", tau = "shear_side_peak_Pa"}}
+  if measured_at_peak then
+    for li, ds in ipairs(depth.sets) do
+      local slump_of = {}
+      for _, ps in ipairs(ds.per_seed) do slump_of[ps.seed] = ps.slump_yield_stress_Pa end
+      for _, e in ipairs(AT_PEAK) do
+        local points = {}
+        for _, r in ipairs(depth_runs) do
+          if r.set == levels[li].label and r[e.sigma] and r[e.tau] then points[#points + 1] = {seed = r.seed, sigma = r[e.sigma], tau = r[e.tau]} end
+        end
+        ds[e.name] = mohr_coulomb.envelope{points = points, slump_of = slump_of, slump_mean = ds.slump_yield_stress_Pa.mean, target = P.target}
+        local env = ds[e.name]
+        for _, cell in ipairs({report.cell(env.pooled and env.pooled.c), report.cell(env.pooled and env.pooled.se_c),
+                               report.cell(env.pooled and env.pooled.tan_phi), report.cell(env.c_over_slump.mean),
+                               report.cell(env.c_over_slump.std), report.cell(env.pooled_c_over_slump), tostring(env.c_within_target)}) do
+          frows[li][#frows[li] + 1] = cell
+        end
+      end
+    end
+  end
   local dcols = {"set", "value", "seed", "fill_level", "cup_height", "depth_mid_m", "fill_solid_fraction", "bulk_density", "sigma_v_Pa",
                  "sigma_janssen_Pa",
                  "particles", "peak_torque_Nm", "peak_angle_deg", "peak_reached", "vane_yield_stress_Pa", "ratio_to_slump", "wall_s"}
+  local fcols = {"set", "value", "seeds", "c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "tan_phi_pooled_se",
+                 "r2_pooled", "c_seed_mean_Pa", "c_seed_std_Pa", "tan_phi_seed_mean", "tan_phi_seed_std",
+                 "slump_Pa", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump", "c_determined", "c_within_target",
+                 "shallow_over_slump", "shallow_over_slump_std", "shallow_within_target", "c_janssen_pooled_Pa",
+                 "c_janssen_pooled_se_Pa", "tan_phi_janssen_pooled", "c_janssen_over_slump",
+                 "c_janssen_over_slump_std"}
+  if measured_at_peak then
+    for _, col in ipairs({"sigma_v_measured_Pa", "sigma_n_start_Pa", "sigma_n_peak_Pa", "sigma_rr_peak_Pa", "shear_side_peak_Pa",
+                          "side_torque_share"}) do dcols[#dcols + 1] = col end
+    for _, e in ipairs(AT_PEAK) do
+      for _, col in ipairs({"c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump",
+                            "c_within_target"}) do fcols[#fcols + 1] = e.name .. "_" .. col end
+    end
+  end
   report.cells(depth_runs, dcols, drows)
   util.write_csv("ys_depth_runs.csv", dcols, drows)
-  util.write_csv("ys_depth_fit.csv", {"set", "value", "seeds", "c_pooled_Pa", "c_pooled_se_Pa", "tan_phi_pooled", "tan_phi_pooled_se",
-                                      "r2_pooled", "c_seed_mean_Pa", "c_seed_std_Pa", "tan_phi_seed_mean", "tan_phi_seed_std",
-                                      "slump_Pa", "c_over_slump", "c_over_slump_std", "c_pooled_over_slump", "c_determined", "c_within_target",
-                                      "shallow_over_slump", "shallow_over_slump_std", "shallow_within_target", "c_janssen_pooled_Pa",
-                                      "c_janssen_pooled_se_Pa", "tan_phi_janssen_pooled", "c_janssen_over_slump",
-                                      "c_janssen_over_slump_std"}, frows)
+  util.write_csv("ys_depth_fit.csv", fcols, frows)
 end
 
 local doc = {parameter = P.parameter, seeds = seeds, slump_diameter = P.slump_diameter, rheometer_diameter = P.rheometer_diameter,
@@ -337,13 +380,8 @@ plot '%s' using 1:2:3 with yerrorbars pt 7 ps 1.5 title 'ratio', 1 lc rgb 'black
       end
       local f = util.write_columns("ys_depth_" .. li .. ".dat", "sigma_v_Pa vane_yield_stress_Pa seed", pts)
       local col = colors[(li - 1) % #colors + 1]
-      plots[#plots + 1] = string.format("'%s' using 1:2 with points pt 7 ps 1.3 lc rgb '%s' title '%s: vane peak'", f, col, ds.set)
-      if ds.pooled then
-        plots[#plots + 1] = string.format("%g + %g * x lc rgb '%s' title sprintf('%s: c = %%.0f +- %%.0f Pa, tan phi = %%.2f', %g, %g, %g)",
-                                          ds.pooled.c, ds.pooled.tan_phi, col, ds.set, ds.pooled.c, ds.pooled.se_c or 0, ds.pooled.tan_phi)
-      end
-      if ds.slump_yield_stress_Pa.mean then
-        plots[#plots + 1] = string.format("%g lc rgb '%s' dt 2 title '%s: tau_slump'", ds.slump_yield_stress_Pa.mean, col, ds.set)
+      for _, clause in ipairs(report.depth_plot_clauses(f, "1:2", col, ds.set, "vane peak", ds.pooled, ds.slump_yield_stress_Pa.mean)) do
+        plots[#plots + 1] = clause
       end
     end
     pictures.depth = util.gnuplot("ys_depth", string.format([[
@@ -382,6 +420,15 @@ if depth then
       print(string.format("%-10s %8s  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16s  %7.3f +- %-6.3f  (Janssen K = %g, mu_w = %g)", "", "",
                           j.pooled.c, j.pooled.se_c or 0 / 0, j.pooled.tan_phi, j.pooled.se_tan_phi or 0 / 0, "",
                           j.c_over_slump.mean or 0 / 0, j.c_over_slump.std or 0 / 0, j.lateral_ratio, j.wall_friction))
+    end
+    for _, name in ipairs({"failure", "side"}) do
+      local e = ds[name]
+      if e and e.pooled then
+        print(string.format("%-10s %8s  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16.3f  %7.3f +- %-6.3f  (%s)", "", "", e.pooled.c, e.pooled.se_c or 0 / 0,
+                            e.pooled.tan_phi, e.pooled.se_tan_phi or 0 / 0, e.pooled_c_over_slump or 0 / 0, e.c_over_slump.mean or 0 / 0,
+                            e.c_over_slump.std or 0 / 0, name == "failure" and "against sigma_n measured at the peak"
+                                                          or "the side's shear against its sigma_rr at the peak"))
+      end
     end
   end
 end

@@ -107,4 +107,27 @@ end
 local ok, msg = pcall(line_fit.fit, {x = {1, 2}, y = {2, math.huge}, what = "vane yield stress"})
 check(not ok and tostring(msg):find("vane yield stress: y%[2%]"), "line_fit error names the fit and the point: %s", tostring(msg))
 
+-- mohr_coulomb.envelope: two seeds on exact lines τ = 100 + 0.5 σ (seed 1) and τ = 140 + 0.5 σ
+-- (seed 2) at σ = 200, 400: per seed c = 100, 140; pooled through the four points c = 120,
+-- tanφ = 0.5 (the seeds' mean line), residuals ±20 → SSE = 1600 on 2 dof, s² = 800, Sxx = 40 000,
+-- σ̄ = 300: se(c) = √(800 (1/4 + 9/4)) = √2000; c / τ_slump per seed 100/80, 140/100; pooled 120/90.
+-- A third seed with one point has no line of its own (its error reported), but counts in the pool
+-- when it sits on the pooled line (σ = 300, τ = 270).
+local env = mohr_coulomb.envelope{points = {{seed = 2, sigma = 200, tau = 240}, {seed = 1, sigma = 200, tau = 200},
+                                  {seed = 1, sigma = 400, tau = 300}, {seed = 2, sigma = 400, tau = 340}},
+                        slump_of = {[1] = 80, [2] = 100}, slump_mean = 90, target = 0.25}
+check(#env.per_seed == 2 and env.per_seed[1].seed == 1 and env.per_seed[2].seed == 2, "envelope: seeds in order")
+check(near(env.per_seed[1].fit.c, 100, 1e-12) and near(env.per_seed[2].fit.c, 140, 1e-12), "envelope: per-seed c")
+check(near(env.pooled.c, 120, 1e-12) and near(env.pooled.tan_phi, 0.5, 1e-12), "envelope: pooled %.17g, %.17g", env.pooled.c, env.pooled.tan_phi)
+check(near(env.pooled.se_c, math.sqrt(2000), 1e-12), "envelope: se(c) = %.17g", env.pooled.se_c)
+check(near(env.c_over_slump.mean, (1.25 + 1.4) / 2, 1e-12) and near(env.pooled_c_over_slump, 120 / 90, 1e-12), "envelope: ratios")
+check(near(env.c_Pa.mean, 120, 1e-12) and near(env.c_Pa.std, math.sqrt(800), 1e-12), "envelope: c over the seeds")
+-- c = 120 > 2 √2000 = 89.4: determined; mean ratio 1.325 is outside 25 %.
+check(env.c_determined == true and env.c_within_target == false, "envelope: determined, not within target")
+env = mohr_coulomb.envelope{points = {{seed = 1, sigma = 200, tau = 200}, {seed = 1, sigma = 400, tau = 300}, {seed = 3, sigma = 300, tau = 250}},
+                  slump_of = {[1] = 100}, slump_mean = 100, target = 0.25}
+check(env.per_seed[2].fit == nil and tostring(env.per_seed[2].fit_error):find("at least 2"), "envelope: a one-point seed's error")
+check(env.pooled.n == 3 and near(env.pooled.c, 100, 1e-12), "envelope: the one point in the pool")
+check(env.c_within_target == false or env.c_determined, "envelope: within target only when determined")
+
 paddy.result{ok = true}

@@ -57,6 +57,12 @@ set(rheometer_mini_args
     --set snapshot_interval=0 --set vane_diameter=0.05 --set vane_height=0.06
     --set vane_bottom=0.03 --set fill_level=0.12 --set cup_diameter=0.1 --set mud_density=1680)
 
+# The tiny yield-stress study of validation_ys and validation_vfs (one set, 2 seeds, 40 mm spheres in
+# the cone, a 4 degree start-up); each case adds its cup's sphere size.
+set(ys_tiny --set values=0.06 --set seeds=1,2 --set slump_diameter=0.04
+    "--set" "rheometer_set=startup_angle=4,settle_max_time=0.6,min_rest_time=0.1,insert_time=0.01"
+    --set slump_set=max_time=0.3 --set code_version=test)
+
 if(CASE STREQUAL "measure_binding")
   run_paddy(code se run ${HERE}/measure_binding.lua --out out --threads 1)
   expect_code(${code} 0)
@@ -64,7 +70,7 @@ if(CASE STREQUAL "measure_binding")
   expect_file(${WORK}/out/pics/top.png)
   expect_file(${WORK}/out/pics/top.pgm)
 
-elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases|mohr_coulomb_fit|tack_observables)$")
+elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases|mohr_coulomb_fit|tack_observables|surface_stress)$")
   # Library checks written in Lua (tests/experiments/<case>.lua): each raises an error on a wrong
   # answer and writes ok = true at the end.
   run_paddy(code se run ${HERE}/${CASE}.lua --out out --threads 1)
@@ -470,9 +476,7 @@ elseif(CASE STREQUAL "validation_ys")
   # study's files exist (the old ones and the depth series'), each seed's and the pooled fit exist
   # and the pooled fit has the 4 points; ys_runs.csv's vane columns are filled (the reference level).
   # Without a depth series the study runs as before; a depth series with one fill level is refused.
-  set(tiny --set values=0.06 --set seeds=1,2 --set rheometer_diameter=0.02 --set slump_diameter=0.04
-      "--set" "rheometer_set=startup_angle=4,settle_max_time=0.6,min_rest_time=0.1,insert_time=0.01"
-      --set slump_set=max_time=0.3 --set code_version=test)
+  set(tiny ${ys_tiny} --set rheometer_diameter=0.02)
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out out --threads 1 ${tiny}
             --set vane_fill_levels=0.102,0.12)
   expect_code(${code} 0)
@@ -490,6 +494,16 @@ elseif(CASE STREQUAL "validation_ys")
   file(STRINGS ${WORK}/out/ys_depth_runs.csv lines)
   list(LENGTH lines n_lines)
   expect_number(${n_lines} EQUAL 5 "lines of ys_depth_runs.csv (header + 2 seeds x 2 levels)")
+  # The vanes measured their sheared surface's stresses at the peak (rheometer.lua's default): the
+  # depth rows carry them and each set has the lines at failure, one per seed.
+  list(GET lines 0 header)
+  if(NOT header MATCHES "sigma_n_peak_Pa,sigma_rr_peak_Pa,shear_side_peak_Pa,side_torque_share")
+    message(FATAL_ERROR "ys_depth_runs.csv lacks the stresses at the peak: ${header}")
+  endif()
+  result_length(n depth_series sets 0 failure per_seed)
+  expect_number(${n} EQUAL 2 "seeds of the line at failure")
+  result_length(n depth_series sets 0 side per_seed)
+  expect_number(${n} EQUAL 2 "seeds of the side's line at failure")
   # Without a depth series the study is as before: one vane per set and seed (its slumps shared
   # through the campaign directory), its files, no depth files.
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out plain --threads 1 ${tiny}
@@ -565,6 +579,59 @@ elseif(CASE STREQUAL "validation_ys_resolution")
   set(args run ${SOURCE}/experiments/validation/yield_stress_resolution.lua --threads 1 ${tiny})
   expect_refusals(args one rheometer_diameters=0.02,0.02 "at least 2 distinct diameters"
                        big rheometer_diameters=0.02,0.03 "rheometer_diameters: 0.03 m is outside the allowed range")
+
+elseif(CASE STREQUAL "validation_vfs")
+  # vane_fill_stress.lua on a tiny depth study of yield_stress.lua (12 mm spheres in the cup, one set,
+  # 2 seeds, 2 fill levels, a 4 degree start-up): each vane's fill run again alone is the study's
+  # (same spheres and solid fraction), its stresses and the pooled line are consistent with its runs
+  # (check_vane_fill_stress.lua). A study whose sphere count was altered is a fill that is not the
+  # study's: left out and counted, nothing runs again. A missing study, a directory without one and a
+  # study without a depth series are refused.
+  set(study ${ys_tiny} --set rheometer_diameter=0.012)
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out ys --threads 1 ${study}
+            --set vane_fill_levels=0.102,0.12)
+  expect_code(${code} 0)
+  run_paddy(code se run ${SOURCE}/experiments/validation/vane_fill_stress.lua --out out --threads 1
+            --set study=${WORK}/ys --set code_version=test)
+  expect_code(${code} 0)
+  foreach(f vfs_runs.csv vfs_fit.csv vane_fill_stress.json vfs_depth.png)
+    expect_file(${WORK}/out/${f})
+  endforeach()
+  result(m mismatched)
+  expect_number(${m} EQUAL 0 "fills not the study's")
+  result(failed failed)
+  expect_number(${failed} EQUAL 0 "failed fills")
+  run_paddy(code se run ${HERE}/check_vane_fill_stress.lua --out chk --set dir=${WORK}/out)
+  expect_code(${code} 0)
+  # The study altered: its first vane had one sphere more.
+  file(MAKE_DIRECTORY ${WORK}/altered)
+  file(READ ${WORK}/ys/yield_stress_study.json doc)
+  string(JSON n GET "${doc}" depth_runs 0 particles)
+  math(EXPR n1 "${n} + 1")
+  string(JSON doc SET "${doc}" depth_runs 0 particles ${n1})
+  file(WRITE ${WORK}/altered/yield_stress_study.json "${doc}")
+  run_paddy(code se run ${SOURCE}/experiments/validation/vane_fill_stress.lua --out out2 --threads 1
+            --set study=${WORK}/altered --set code_version=test --set campaign_dir=${WORK}/out/campaign)
+  expect_code(${code} 0)
+  result_json(GET out2 m mismatched)
+  expect_number(${m} EQUAL 1 "fills not the study's (altered study)")
+  result_json(GET out2 same runs 0 same_fill)
+  if(NOT same STREQUAL "OFF" AND NOT same STREQUAL "false")
+    message(FATAL_ERROR "the altered vane's fill counted as the study's: ${same}")
+  endif()
+  if(NOT se MATCHES "not the same fill")
+    message(FATAL_ERROR "no message about the altered fill: ${se}")
+  endif()
+  if(se MATCHES "campaign: [0-9]+/[0-9]+ done, [1-9][0-9]* running")
+    message(FATAL_ERROR "fills ran again for the altered study: ${se}")
+  endif()
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out plain --threads 1 ${study}
+            --set campaign_dir=${WORK}/ys/campaign)
+  expect_code(${code} 0)
+  set(args run ${SOURCE}/experiments/validation/vane_fill_stress.lua --threads 1)
+  expect_refusals(args none study= "give study = the output directory"
+                       empty study=${WORK}/chk "no yield_stress_study.json there"
+                       flat study=${WORK}/plain "has no depth series")
 
 elseif(CASE STREQUAL "validation_lift_speed")
   # The slump's yield stress against the cone lift speed on tiny runs (40 mm spheres, two sets, lifts

@@ -10,5 +10,6 @@
 #include <paddy/measure/relative_error.hpp>
 #include <paddy/measure/slump.hpp>
 #include <paddy/measure/slump_flow.hpp>
+#include <paddy/measure/surface_stress.hpp>
 #include <paddy/measure/top_view.hpp>
 #include <paddy/measure/vane.hpp>
