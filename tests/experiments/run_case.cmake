@@ -340,6 +340,24 @@ elseif(CASE STREQUAL "rheometer_mini")
   run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
             ${rheometer_mini_args})
   expect_code(${code} 0)
+  # The stresses around the vane from the contact forces (lib/vane_stress.lua): as it starts, a
+  # compressive overburden of the weight's scale (~540 Pa hydrostatic, less with the wall's share),
+  # a lateral ratio between 0 and 1.5 and the vane relation's side share (H/D)/(H/D + 1/3) = 0.7826;
+  # at the start-up's peak the side carries a positive part of the torque, not more than all of it.
+  result(sv fill_stress sigma_v_Pa)
+  expect_number(${sv} GREATER 50 "overburden at mid-height [Pa]")
+  expect_number(${sv} LESS 700 "overburden at mid-height [Pa]")
+  result(k fill_stress lateral_ratio)
+  expect_number(${k} GREATER 0 "lateral ratio")
+  expect_number(${k} LESS 1.5 "lateral ratio")
+  result(share fill_stress side_share)
+  expect_number(${share} GREATER 0.78260 "side share of the vane relation")
+  expect_number(${share} LESS 0.78261 "side share of the vane relation")
+  result(n startup stress_at_peak samples)
+  expect_number(${n} GREATER 0 "stress samples at the start-up's peak")
+  result(side startup stress_at_peak side_torque_share)
+  expect_number(${side} GREATER 0.05 "the side's share of the peak torque")
+  expect_number(${side} LESS 1.2 "the side's share of the peak torque")
   result(factor vane torque_factor_m3)
   expect_number(${factor} GREATER 3.0097e-4 "vane torque factor [m^3]")
   expect_number(${factor} LESS 3.0117e-4 "vane torque factor [m^3]")
