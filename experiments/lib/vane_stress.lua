@@ -27,11 +27,12 @@ function M.measure(sim, vane)
   local zt = zb + H
   local rs = vane.shaft_radius or 0
   local m = vane.sheared_ends or 2
-  local w = vane.wall
-  local side = sim:measure_stress{surface = "cylinder", radius = R, z_min = zb, z_max = zt, walls = w}
-  local top = sim:measure_stress{surface = "disc", z = zt, r_min = rs, r_max = R, walls = w}
-  local bottom = sim:measure_stress{surface = "disc", z = zb, r_min = rs, r_max = R, walls = w}
-  local mid = sim:measure_stress{surface = "disc", z = zb + H / 2, r_min = rs, r_max = vane.cup_diameter / 2, walls = w}
+  local side, top, bottom, mid = table.unpack(sim:measure_stress{walls = vane.wall, surfaces = {
+    {surface = "cylinder", radius = R, z_min = zb, z_max = zt},
+    {surface = "disc", z = zt, r_min = rs, r_max = R},
+    {surface = "disc", z = zb, r_min = rs, r_max = R},
+    {surface = "disc", z = zb + H / 2, r_min = rs, r_max = vane.cup_diameter / 2},
+  }})
   local s = (H / (2 * R)) / (H / (2 * R) + m / 6)
   local ends = m > 0 and (top.normal + bottom.normal) / 2 or 0
   return {

@@ -50,6 +50,16 @@ function M.depth_plot_clauses(file, using, color, label, points_title, line, tau
   return out
 end
 
+-- A Mohr–Coulomb depth picture <stem>.png: shear stress against a normal stress, both axes from
+-- zero, with the plot clauses (M.depth_plot_clauses) of every set. → the picture's path (util.gnuplot)
+function M.depth_picture(stem, title, xlabel, ylabel, plots)
+  return util.gnuplot(stem, string.format([[
+set title '%s'
+set xlabel '%s'; set ylabel '%s'; set grid; set key top left font ',9'
+set xrange [0:*]; set yrange [0:*]
+plot %s]], title, xlabel, ylabel, table.concat(plots, ", \\\n     ")))
+end
+
 -- Mean and sample standard deviation (n − 1) of a list; the std is 0 for one value.
 function M.mean_std(values)
   local n = #values

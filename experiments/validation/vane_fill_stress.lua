@@ -142,11 +142,8 @@ if P.pictures then
     end
     plots[#plots + 1] = string.format("'%s' using 3:2 with points pt 6 ps 1.3 lc rgb '%s' title '%s: against rho_b g z'", file, col, s.set)
   end
-  pictures.depth = util.gnuplot("vfs_depth", string.format([[
-set title 'Vane peak stress against the normal stress on the sheared surface, measured before the start-up'
-set xlabel 'normal stress [Pa]'; set ylabel 'vane peak shear stress [Pa]'; set grid; set key top left font ',9'
-set xrange [0:*]; set yrange [0:*]
-plot %s]], table.concat(plots, ", \\\n     ")))
+  pictures.depth = report.depth_picture("vfs_depth", "Vane peak stress against the normal stress on the sheared surface, measured before the start-up",
+                                        "normal stress [Pa]", "vane peak shear stress [Pa]", plots)
 end
 
 print(string.format("%-28s %18s %14s %16s %16s %20s", "set", "c [Pa]", "tan phi", "c/slump (pooled)", "c/slump seeds", "hydrostatic c [Pa]"))

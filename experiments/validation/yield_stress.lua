@@ -384,11 +384,8 @@ plot '%s' using 1:2:3 with yerrorbars pt 7 ps 1.5 title 'ratio', 1 lc rgb 'black
         plots[#plots + 1] = clause
       end
     end
-    pictures.depth = util.gnuplot("ys_depth", string.format([[
-set title 'Vane peak stress against the overburden at blade mid-height (Mohr-Coulomb fit, pooled seeds)'
-set xlabel 'sigma_v = rho_bulk g z [Pa]'; set ylabel 'shear stress [Pa]'; set grid; set key top left font ',9'
-set xrange [0:*]; set yrange [0:*]
-plot %s]], table.concat(plots, ", \\\n     ")))
+    pictures.depth = report.depth_picture("ys_depth", "Vane peak stress against the overburden at blade mid-height (Mohr-Coulomb fit, pooled seeds)",
+                                          "sigma_v = rho_bulk g z [Pa]", "shear stress [Pa]", plots)
   end
 end
 

@@ -12,13 +12,8 @@ local P = paddy.parameters{
   {name = "cone_height", default = 0.3, description = "its cone_height"},
   {name = "rest_margin", default = 5, description = "its rest_margin"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
-local function near(a, b, rel, what)
-  check(type(a) == "number" and type(b) == "number" and math.abs(a - b) <= rel * math.max(1, math.abs(b)),
-        "%s: %s against %s", what, tostring(a), tostring(b))
-end
+local checks = require("checks")
+local check, near = checks.check, checks.near
 local REL = 1e-7  -- the files hold 9 significant digits
 
 local speeds, values, seeds = util.numbers(P.speeds, "speeds"), util.numbers(P.values, "values"), util.numbers(P.seeds, "seeds")

@@ -9,13 +9,8 @@ local P = paddy.parameters{
   {name = "runs", default = 4, type = "integer", description = "fills expected"},
   {name = "side_share", default = 0.78260869565, description = "(H/D)/(H/D + 1/3) of the study's vane"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
-local function near(a, b, rel, what)
-  check(type(a) == "number" and type(b) == "number" and math.abs(a - b) <= rel * math.max(1, math.abs(b)),
-        "%s: %s against %s", what, tostring(a), tostring(b))
-end
+local checks = require("checks")
+local check, near = checks.check, checks.near
 local REL = 1e-7
 
 local runs = util.read_csv(P.dir .. "/vfs_runs.csv")

@@ -70,6 +70,28 @@ do
   end
 end
 
+-- 2b. Several surfaces in one call (one reading of the contacts) give what one call each gives.
+do
+  local sim, m, s = new_sim({0, 0, -g})
+  sim:add_wall{type = "plane", point = {0, 0, 0}, normal = {0, 0, 1}, material = s, name = "floor"}
+  for k = 1, 3 do sim:add_particle{pos = {0.001 * k, 0, (2 * k - 1) * r * 1.001}, radius = r, material = m} end
+  sim:timestep{fraction = 0.1}
+  sim:run{duration = 0.05}
+  local specs = {{surface = "disc", z = 2 * r, r_max = 3 * r}, {surface = "cylinder", radius = 0.0015, z_min = 0, z_max = 6 * r},
+                 {surface = "disc", z = 0.5 * r, r_max = 3 * r}}
+  local all = sim:measure_stress{surfaces = specs, walls = "floor"}
+  check("one result per surface", #all == #specs)
+  for k, spec in ipairs(specs) do
+    local one = {walls = "floor"}
+    for key, v in pairs(spec) do one[key] = v end
+    local st = sim:measure_stress(one)
+    for _, key in ipairs({"normal", "shear", "area", "crossings"}) do
+      check(string.format("surface %d: %s %s in the list, %s alone", k, key, tostring(all[k][key]), tostring(st[key])), all[k][key] == st[key])
+    end
+  end
+  check("the floor's contact counts when listed", all[3].crossings == 1 and all[3].normal > 0)
+end
+
 -- 3. Bad input names the option.
 do
   local sim = new_sim({0, 0, 0})
@@ -79,5 +101,11 @@ do
   check("bad radii refused: " .. tostring(err), not ok and tostring(err):match("r_min < r_max"))
   ok, err = pcall(function() return sim:measure_stress{surface = "disc", z = 0, r_max = 1, height = 2} end)
   check("unknown option refused: " .. tostring(err), not ok and tostring(err):match("height"))
+  ok, err = pcall(function() return sim:measure_stress{surfaces = {}} end)
+  check("an empty surface list refused: " .. tostring(err), not ok and tostring(err):match("non%-empty list"))
+  ok, err = pcall(function() return sim:measure_stress{surfaces = {{surface = "disc", z = 0, r_max = 1}, {surface = "cone"}}} end)
+  check("a bad surface named by its place: " .. tostring(err), not ok and tostring(err):match("surface 2: surface 'cone'"))
+  ok, err = pcall(function() return sim:measure_stress{surfaces = {{surface = "disc", z = 0, r_max = 1}}, z = 1} end)
+  check("a list with surface options beside it refused: " .. tostring(err), not ok and tostring(err):match("'z'"))
 end
 paddy.result{ok = true}

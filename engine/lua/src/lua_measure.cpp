@@ -39,16 +39,9 @@
 
 namespace paddy::lua {
 
-namespace {
-
-namespace fs = std::filesystem;
-namespace pm = paddy::measure;
-
-// ---- small readers / writers ------------------------------------------------------------------
-
-// {x, y} or {x, y, z} (z ignored) → Vec2.
-pm::Vec2 readAxis(lua_State* L, OptionTable& opt) {
-  if (!opt.has("axis")) return pm::Vec2::Zero();
+// Declared in measure_module.hpp.
+Eigen::Vector2d readAxis(lua_State* L, OptionTable& opt) {
+  if (!opt.has("axis")) return Eigen::Vector2d::Zero();
   opt.push("axis");
   const int idx = lua_gettop(L);
   const auto n = lua_type(L, idx) == LUA_TTABLE ? lua_rawlen(L, idx) : 0;
@@ -56,7 +49,7 @@ pm::Vec2 readAxis(lua_State* L, OptionTable& opt) {
     lua_pop(L, 1);
     throw InputError(opt.context() + " option 'axis' must be {x, y} (or {x, y, z})");
   }
-  pm::Vec2 a;
+  Eigen::Vector2d a;
   bool ok = true;
   for (int k = 0; k < 2; ++k) {
     lua_rawgeti(L, idx, k + 1);
@@ -68,6 +61,13 @@ pm::Vec2 readAxis(lua_State* L, OptionTable& opt) {
   if (!ok) throw InputError(opt.context() + " option 'axis' must hold numbers");
   return a;
 }
+
+namespace {
+
+namespace fs = std::filesystem;
+namespace pm = paddy::measure;
+
+// ---- small readers / writers ------------------------------------------------------------------
 
 // The simulation's particles (optionally of one material) as the measures take them.
 struct Particles {

@@ -3,6 +3,8 @@
 //   sim:measure_stress{surface = "disc", z =, r_max =, r_min = 0, axis = {x, y}, walls = {...}}
 //   sim:measure_stress{surface = "cylinder", radius =, z_min =, z_max =, axis = {x, y}, walls = {...}}
 //     → {normal = σ_n [Pa] (compression positive), shear = τ along θ̂ [Pa], area = [m²], crossings =}
+//   sim:measure_stress{surfaces = {{surface = ..., ...}, ...}, walls = {...}}
+//     → an array of such tables, one per surface, from one reading of the contacts
 //
 // The contacts are the simulation's particle–particle contacts at its current state
 // (Simulation::contacts()); the force of each is the one the law gives. Wall contacts count only
@@ -11,6 +13,7 @@
 // x_c = x_i − (r_i − δ/2) n̂ (the lever arm the engine applies the force at). A vane's blade tips
 // lie on the cylinder its tips sweep: list the vane to count the spheres they push.
 #include "lua_util.hpp"
+#include "measure_module.hpp"
 #include "registry.hpp"
 #include "sim_handle.hpp"
 #include "wall_args.hpp"
@@ -21,6 +24,7 @@
 #include <algorithm>
 #include <string>
 #include <unordered_map>
+#include <variant>
 #include <vector>
 
 namespace paddy::lua {
@@ -29,38 +33,33 @@ namespace {
 
 namespace pm = paddy::measure;
 
-pm::Vec2 axisOption(lua_State* L, OptionTable& opt) {
-  if (!opt.has("axis")) return pm::Vec2::Zero();
-  opt.push("axis");
-  const std::vector<double> a = toNumberArray(L, -1, opt.context() + " option 'axis'");
-  lua_pop(L, 1);
-  if (a.size() != 2 && a.size() != 3) throw InputError(opt.context() + " option 'axis' must be {x, y}");
-  return {a[0], a[1]};
-}
+using Surface = std::variant<pm::DiscSurface, pm::CylinderSurface>;
 
-// Walls given as `walls` (one wall or a list), as indices.
-std::vector<int> wallsOption(lua_State* L, SimHandle& h, OptionTable& opt) {
-  std::vector<int> out;
-  if (!opt.has("walls")) return out;
-  opt.push("walls");
-  const int idx = lua_gettop(L);
-  try {
-    if (lua_type(L, idx) == LUA_TTABLE) {
-      const auto n = static_cast<lua_Integer>(lua_rawlen(L, idx));
-      for (lua_Integer k = 1; k <= n; ++k) {
-        lua_rawgeti(L, idx, k);
-        out.push_back(wallArg(L, h, -1, opt.context() + " option 'walls' entry " + std::to_string(k)));
-        lua_pop(L, 1);
-      }
-    } else {
-      out.push_back(wallArg(L, h, idx, opt.context() + " option 'walls'"));
-    }
-  } catch (...) {
-    lua_settop(L, idx - 1);
-    throw;
+// One surface from the option table at `idx` (its `surface`, axis and dimensions); `extra`
+// names a key the table may hold besides them (the single form's `walls`), or nullptr.
+Surface readSurface(lua_State* L, int idx, const std::string& context, const char* extra) {
+  OptionTable opt(L, idx, context);
+  if (extra) opt.accept(extra);
+  const std::string surface = opt.string("surface");
+  if (surface == "disc") {
+    pm::DiscSurface d;
+    d.axis = readAxis(L, opt);
+    d.z = opt.number("z");
+    d.r_min = opt.number("r_min", 0.0);
+    d.r_max = opt.number("r_max");
+    opt.finish();
+    return d;
   }
-  lua_pop(L, 1);
-  return out;
+  if (surface == "cylinder") {
+    pm::CylinderSurface c;
+    c.axis = readAxis(L, opt);
+    c.radius = opt.number("radius");
+    c.z_min = opt.number("z_min");
+    c.z_max = opt.number("z_max");
+    opt.finish();
+    return c;
+  }
+  throw InputError(context + ": surface '" + surface + "' is not one of disc, cylinder");
 }
 
 // The particle–particle contacts (both centres, the force on the first particle) and the contacts
@@ -88,36 +87,72 @@ std::vector<pm::ContactForce> contactForces(const Simulation& sim, const std::ve
   return out;
 }
 
-int measureStress(lua_State* L) {
-  SimHandle& h = checkSim(L, 1);
-  OptionTable opt(L, 2, "measure_stress");
-  const std::string surface = opt.string("surface");
-  const std::vector<int> walls = wallsOption(L, h, opt);
-  pm::SurfaceStress s;
-  if (surface == "disc") {
-    pm::DiscSurface d;
-    d.axis = axisOption(L, opt);
-    d.z = opt.number("z");
-    d.r_min = opt.number("r_min", 0.0);
-    d.r_max = opt.number("r_max");
-    opt.finish();
-    s = pm::discStress(contactForces(*h.sim, walls), d);
-  } else if (surface == "cylinder") {
-    pm::CylinderSurface c;
-    c.axis = axisOption(L, opt);
-    c.radius = opt.number("radius");
-    c.z_min = opt.number("z_min");
-    c.z_max = opt.number("z_max");
-    opt.finish();
-    s = pm::cylinderStress(contactForces(*h.sim, walls), c);
-  } else {
-    throw InputError("measure_stress: surface '" + surface + "' is not one of disc, cylinder");
-  }
+void pushStress(lua_State* L, const pm::SurfaceStress& s) {
   lua_createtable(L, 0, 4);
   setNumber(L, "normal", s.normal);
   setNumber(L, "shear", s.shear);
   setNumber(L, "area", s.area);
   setInteger(L, "crossings", static_cast<long long>(s.crossings));
+}
+
+pm::SurfaceStress stressAcross(const std::vector<pm::ContactForce>& contacts, const Surface& surface) {
+  if (const auto* d = std::get_if<pm::DiscSurface>(&surface)) return pm::discStress(contacts, *d);
+  return pm::cylinderStress(contacts, std::get<pm::CylinderSurface>(surface));
+}
+
+int measureStress(lua_State* L) {
+  SimHandle& h = checkSim(L, 1);
+  const std::string ctx = "measure_stress";
+  if (lua_type(L, 2) != LUA_TTABLE) throw InputError(ctx + " expects a table of options");
+  // Walls whose contacts count: one wall or a list ({} or absent: none).
+  std::vector<int> walls;
+  lua_getfield(L, 2, "walls");
+  if (!lua_isnil(L, -1) && !(lua_type(L, -1) == LUA_TTABLE && lua_rawlen(L, -1) == 0)) {
+    try {
+      walls = wallList(L, h, -1, ctx + " option 'walls'");
+    } catch (...) {
+      lua_pop(L, 1);
+      throw;
+    }
+  }
+  lua_pop(L, 1);
+  // The surfaces: the list `surfaces` (with nothing else but walls), or the table itself.
+  std::vector<Surface> surfaces;
+  lua_getfield(L, 2, "surfaces");
+  const bool many = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (many) {
+    OptionTable opt(L, 2, ctx);
+    opt.accept("walls");
+    opt.push("surfaces");
+    const int list = lua_gettop(L);
+    const auto n = lua_type(L, list) == LUA_TTABLE ? static_cast<lua_Integer>(lua_rawlen(L, list)) : 0;
+    try {
+      if (n == 0) throw InputError(ctx + " option 'surfaces' must be a non-empty list of surfaces");
+      for (lua_Integer k = 1; k <= n; ++k) {
+        lua_rawgeti(L, list, k);
+        surfaces.push_back(readSurface(L, -1, ctx + " surface " + std::to_string(k), nullptr));
+        lua_pop(L, 1);
+      }
+    } catch (...) {
+      lua_settop(L, list - 1);
+      throw;
+    }
+    lua_pop(L, 1);
+    opt.finish();
+  } else {
+    surfaces.push_back(readSurface(L, 2, ctx, "walls"));
+  }
+  const std::vector<pm::ContactForce> contacts = contactForces(*h.sim, walls);
+  if (!many) {
+    pushStress(L, stressAcross(contacts, surfaces[0]));
+    return 1;
+  }
+  lua_createtable(L, static_cast<int>(surfaces.size()), 0);
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    pushStress(L, stressAcross(contacts, surfaces[k]));
+    lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
   return 1;
 }
 

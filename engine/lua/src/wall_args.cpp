@@ -35,11 +35,11 @@ MeshWall& meshWallArg(lua_State* L, SimHandle& h, int idx, const std::string& fn
   return *m;
 }
 
-std::vector<int> meshWallList(lua_State* L, SimHandle& h, int idx, const std::string& fn) {
+std::vector<int> wallList(lua_State* L, SimHandle& h, int idx, const std::string& fn, bool mesh_only) {
   idx = lua_absindex(L, idx);
   std::vector<int> out;
   if (lua_type(L, idx) != LUA_TTABLE) {
-    meshWallArg(L, h, idx, fn);
+    if (mesh_only) meshWallArg(L, h, idx, fn);
     out.push_back(wallArg(L, h, idx, fn));
     return out;
   }
@@ -49,7 +49,7 @@ std::vector<int> meshWallList(lua_State* L, SimHandle& h, int idx, const std::st
     lua_rawgeti(L, idx, k);
     const std::string entry = fn + " entry " + std::to_string(k);
     try {
-      meshWallArg(L, h, -1, entry);
+      if (mesh_only) meshWallArg(L, h, -1, entry);
       out.push_back(wallArg(L, h, -1, entry));
     } catch (...) {
       lua_pop(L, 1);
@@ -58,6 +58,10 @@ std::vector<int> meshWallList(lua_State* L, SimHandle& h, int idx, const std::st
     lua_pop(L, 1);
   }
   return out;
+}
+
+std::vector<int> meshWallList(lua_State* L, SimHandle& h, int idx, const std::string& fn) {
+  return wallList(L, h, idx, fn, true);
 }
 
 std::vector<int> allMeshWalls(Simulation& sim) {
