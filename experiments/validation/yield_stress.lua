@@ -28,10 +28,17 @@
 -- lib/vane_stress.lua) also the lines at failure, from the contact forces at the peak: τ_peak against
 -- the torque-weighted normal stress σ_n there ("failure"), and the side's own shear stress against
 -- its normal stress σ_rr ("side"). Extra outputs: ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
+--
+-- More seeds for a finished study: with_studies = its output directory (several: comma-separated)
+-- and seeds = the new seeds only. The finished study's rows are read back from its
+-- yield_stress_study.json (yield_stress_rows.lua; the design must be the same and no seed may
+-- repeat, checked before anything runs), and every statistic is over all the seeds, as if one study
+-- had run them (to the 10 digits its JSON keeps); the JSON lists the pooled studies.
 local util = require("lib.util")
 local mohr_coulomb = require("lib.mohr_coulomb")
 local report = require("report")
 local ys_jobs = require("yield_stress_jobs")
+local ys_rows = require("yield_stress_rows")
 
 local P = paddy.parameters{
   {name = "parameter", default = "jkr_surface_energy", description = "the mud parameter that differs between the sets"},
@@ -46,6 +53,7 @@ local P = paddy.parameters{
   {name = "reference_fill_level", default = 0.12, unit = "m", min = 0.01, max = 1, description = "with vane_fill_levels: the level whose vane fills ys_runs.csv's vane columns (rheometer.lua's default fill)"},
   {name = "janssen_lateral_ratio", default = 0, min = 0, max = 10, description = "with vane_fill_levels: also fit against Janssen's vertical stress with this lateral stress ratio K (0: no such fit)"},
   {name = "janssen_wall_friction", default = 0.6, min = 0, max = 10, description = "with janssen_lateral_ratio: the wall friction coefficient of the cup (lib/mud.lua's mud-steel sliding friction)"},
+  {name = "with_studies", default = "", description = "finished studies of the same design (their output directories, comma-separated) whose seeds pool with this study's: more seeds without running the old ones again"},
   {name = "target", default = 0.25, min = 0, max = 10, description = "agreement target: |mean ratio − 1| within this"},
   {name = "max_parallel", default = 1, type = "integer", min = 1, max = 256, description = "runs at once"},
   {name = "threads_per_job", default = 1, type = "integer", min = 1, max = 256, description = "threads of each run"},
@@ -97,6 +105,9 @@ if fill_levels then
   end
 end
 
+-- Finished studies to pool with this one (with_studies), checked before anything runs.
+local pooled_in = ys_rows.load_studies(P, {levels = levels, seeds = seeds, fill_levels = fill_levels})
+
 local c = report.campaign(P, P.max_attempts)
 local jobs = {}
 for li, l in ipairs(levels) do
@@ -120,13 +131,15 @@ io.stderr:write(string.format("yield_stress: %d sets x %d seeds x (1 slump + %d 
                               fill_levels and #fill_levels or 1, #jobs))
 local results = c:run()
 
--- Collect per set and seed.
-local by = {}  -- by[level][seed] = {slump = result, vane = result, depth = {[fill index] = result}}
-local failed = 0
+-- Every run becomes a row: one per set and seed (ys_runs.csv) and, with a depth series, one per
+-- set, seed and fill level (ys_depth_runs.csv). The statistics below read only these rows, so the
+-- seeds of finished studies (with_studies) pool with this study's own.
 local reference_fill
 if fill_levels then
   for fi, f in ipairs(fill_levels) do if math.abs(f - P.reference_fill_level) < 1e-9 then reference_fill = fi end end
 end
+local by = {}  -- by[level][seed] = {slump = entry, vane = entry, depth = {[fill index] = entry}}
+local failed = 0
 for i, run in ipairs(results) do
   local j = jobs[i]
   by[j.level] = by[j.level] or {}
@@ -146,29 +159,33 @@ for i, run in ipairs(results) do
   end
 end
 
+local run_of, depth_of = {}, {}  -- run_of[level][seed] = row; depth_of[level][seed][fill index] = row
+for li, l in ipairs(levels) do
+  run_of[li], depth_of[li] = {}, {}
+  for _, s in ipairs(seeds) do
+    local e = by[li] and by[li][s] or {depth = {}}
+    run_of[li][s] = ys_rows.run_row(l, s, e.slump, e.vane)
+    if fill_levels then
+      depth_of[li][s] = {}
+      for fi, f in ipairs(fill_levels) do depth_of[li][s][fi] = ys_rows.depth_row(l, s, f, fi, e.depth[fi], e.slump, P) end
+    end
+  end
+end
+
+-- Finished studies of the same design pooled in (their rows as they wrote them).
+local all_seeds, pooled_studies = ys_rows.pool(pooled_in, {levels = levels, seeds = seeds, fill_levels = fill_levels, run_of = run_of,
+                                                            depth_of = depth_of})
+
 local run_rows, runs, summary, sum_rows = {}, {}, {}, {}
 for li, l in ipairs(levels) do
   local tv, ts, ratios = {}, {}, {}
-  for _, s in ipairs(seeds) do
-    local e = by[li] and by[li][s] or {}
-    local sl, va = e.slump and e.slump.result, e.vane and e.vane.result
-    local row = {set = l.label, value = l.value, seed = s,
-                 slump_mm = sl and sl.slump_mm, slump_flow_mm = sl and sl.slump_flow_mm,
-                 fill_solid_fraction = sl and sl.fill_solid_fraction,
-                 slump_yield_stress_Pa = sl and sl.yield_stress_Pa, slump_at_rest = sl and sl.at_rest,
-                 vane_peak_torque_Nm = va and va.startup and va.startup.peak_torque_Nm,
-                 vane_peak_angle_deg = va and va.startup and va.startup.peak_angle_deg,
-                 vane_peak_reached = va and va.startup and va.startup.peak_reached,
-                 vane_yield_stress_Pa = va and va.yield_stress_Pa,
-                 slump_wall_s = e.slump and e.slump.wall, vane_wall_s = e.vane and e.vane.wall}
+  for _, s in ipairs(all_seeds) do
+    local row = run_of[li][s]
     -- Each test's mean over the seeds that ran it: a depth series without the reference level has
     -- no vane here, and its fits still compare with the slumps.
     if row.slump_yield_stress_Pa then ts[#ts + 1] = row.slump_yield_stress_Pa end
     if row.vane_yield_stress_Pa then tv[#tv + 1] = row.vane_yield_stress_Pa end
-    if row.slump_yield_stress_Pa and row.vane_yield_stress_Pa then
-      row.ratio = row.vane_yield_stress_Pa / row.slump_yield_stress_Pa
-      ratios[#ratios + 1] = row.ratio
-    end
+    if row.ratio then ratios[#ratios + 1] = row.ratio end
     runs[#runs + 1] = row
   end
   local s = {set = l.label, value = l.value, seeds = #ratios}
@@ -212,46 +229,17 @@ if fill_levels then
     local cjs, cjratios = {}, {}
     local cs, tans, cratios, shallow = {}, {}, {}, {}
     local per_seed = {}
-    for _, s in ipairs(seeds) do
-      local e = by[li] and by[li][s] or {depth = {}}
-      local tau_slump = e.slump and e.slump.result.yield_stress_Pa
+    for _, s in ipairs(all_seeds) do
+      local tau_slump = run_of[li][s].slump_yield_stress_Pa
       local sig, tau, sigj = {}, {}, {}
-      for fi, f in ipairs(fill_levels) do
-        local v = e.depth[fi] and e.depth[fi].result
-        local row = {set = l.label, value = l.value, seed = s, fill_level = f}
-        if v and v.yield_stress_Pa then
-          local z = v.fill_level - (v.vane.bottom + v.vane.height / 2)
-          row.depth_mid_m = z
-          row.cup_height = v.cup_height
-          row.fill_solid_fraction = v.fill_solid_fraction
-          row.bulk_density = v.mud_density * v.fill_solid_fraction
-          row.sigma_v_Pa = mohr_coulomb.overburden{particle_density = v.mud_density, solid_fraction = v.fill_solid_fraction, depth = z}
-          if P.janssen_lateral_ratio > 0 then
-            row.sigma_janssen_Pa = mohr_coulomb.overburden{particle_density = v.mud_density, solid_fraction = v.fill_solid_fraction,
-              depth = z, janssen = {lateral_ratio = P.janssen_lateral_ratio, wall_friction = P.janssen_wall_friction,
-                                    radius = v.vane.cup_diameter / 2}}
-            sigj[#sigj + 1], pooled_j[#pooled_j + 1] = row.sigma_janssen_Pa, row.sigma_janssen_Pa
-          end
-          local at_peak = v.startup.stress_at_peak  -- measured on the sheared surface at the peak
-          if at_peak then
-            measured_at_peak = true
-            row.sigma_n_start_Pa = v.fill_stress and v.fill_stress.sheared_normal_Pa
-            row.sigma_v_measured_Pa = v.fill_stress and v.fill_stress.sigma_v_Pa
-            row.sigma_n_peak_Pa, row.sigma_rr_peak_Pa = at_peak.sigma_n_Pa, at_peak.sigma_rr_Pa
-            row.shear_side_peak_Pa, row.side_torque_share = at_peak.shear_side_Pa, at_peak.side_torque_share
-          end
-          row.particles = v.particles
-          row.peak_torque_Nm = v.startup.peak_torque_Nm
-          row.peak_angle_deg = v.startup.peak_angle_deg
-          row.peak_reached = v.startup.peak_reached
-          row.vane_yield_stress_Pa = v.yield_stress_Pa
-          row.wall_s = e.depth[fi].wall
+      for fi in ipairs(fill_levels) do
+        local row = depth_of[li][s][fi]
+        if row.vane_yield_stress_Pa then
+          if row.sigma_n_peak_Pa then measured_at_peak = true end
           sig[#sig + 1], tau[#tau + 1] = row.sigma_v_Pa, row.vane_yield_stress_Pa
           pooled_s[#pooled_s + 1], pooled_t[#pooled_t + 1] = row.sigma_v_Pa, row.vane_yield_stress_Pa
-          if fi == 1 and tau_slump then
-            row.ratio_to_slump = row.vane_yield_stress_Pa / tau_slump
-            shallow[#shallow + 1] = row.ratio_to_slump
-          end
+          if row.sigma_janssen_Pa then sigj[#sigj + 1], pooled_j[#pooled_j + 1] = row.sigma_janssen_Pa, row.sigma_janssen_Pa end
+          if row.ratio_to_slump then shallow[#shallow + 1] = row.ratio_to_slump end
         end
         depth_runs[#depth_runs + 1] = row
       end
@@ -350,7 +338,7 @@ if fill_levels then
   util.write_csv("ys_depth_fit.csv", fcols, frows)
 end
 
-local doc = {parameter = P.parameter, seeds = seeds, slump_diameter = P.slump_diameter, rheometer_diameter = P.rheometer_diameter,
+local doc = {parameter = P.parameter, seeds = all_seeds, pooled_studies = pooled_studies, slump_diameter = P.slump_diameter, rheometer_diameter = P.rheometer_diameter,
              slump_set = P.slump_set, rheometer_set = P.rheometer_set, target = P.target, runs = runs, summary = summary,
              depth_series = depth, depth_runs = fill_levels and depth_runs or nil,
              failed = failed, finished = os.date("!%Y-%m-%dT%H:%M:%SZ")}

@@ -9,9 +9,7 @@ local P = paddy.parameters{
   {name = "dir", default = "", description = "phase=check: output directory of surrogate_trials.lua"},
   {name = "trials", default = 3, description = "trials per emulator and strategy the run made"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local D_SLUMP, D_FLOW = 1.5, 2.5
 local params = {"mud_mud_restitution", "mud_mud_friction", "mud_mud_rolling_friction", "mud_steel_restitution",
                 "mud_steel_friction", "mud_steel_rolling_friction", "jkr_surface_energy"}

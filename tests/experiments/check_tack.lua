@@ -8,9 +8,7 @@ local P = paddy.parameters{
   {name = "dir", default = "", description = "directory holding base/, wall/, slow/, fast/"},
   {name = "profile_points", default = 8, type = "integer", min = 1, max = 1000, description = "profile_points of the runs"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local function load(name) return paddy.read_json(P.dir .. "/" .. name .. "/result.json").results end
 local base, wall, slow, fast = load("base"), load("wall"), load("slow"), load("fast")
 

@@ -8,9 +8,7 @@
 local P = paddy.parameters{
   {name = "dir", default = "", description = "output directory of coarse_graining.lua"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local r = paddy.read_json(P.dir .. "/result.json").results
 check(#r.summary == 2, "%d sizes in the summary, expected 2", #r.summary)
 for _, y in ipairs({"slump_mm", "slump_flow_mm"}) do

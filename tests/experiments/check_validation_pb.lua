@@ -7,9 +7,7 @@
 local P = paddy.parameters{
   {name = "dir", default = "", description = "output directory of plackett_burman.lua"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local doc = paddy.read_json(P.dir .. "/pb_validation.json")
 local factorial = {}
 for _, run in ipairs(doc.runs) do

@@ -11,9 +11,7 @@ local P = paddy.parameters{
   {name = "min_step_angle", default = 60, description = "the runs' min_step_angle [deg]"},
   {name = "sample_interval", default = 0.005, description = "the runs' torque sampling interval [s]"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local r = paddy.read_json(P.dir .. "/result.json").results
 check(r.failed == 0, "%d runs failed", r.failed)
 local steps = util.read_csv(P.dir .. "/rs_steps.csv")

@@ -13,9 +13,7 @@ local P = paddy.parameters{
   {name = "dir", default = "", description = "output directory of steepest_ascent.lua"},
   {name = "reference_dir", default = "", description = "shared/reference directory"},
 }
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 -- a == b up to the CSV's 9 significant digits (util.write_csv: %.9g) of numbers of magnitude scale.
 local function close(a, b, what, scale)
   if not (type(a) == "number" and type(b) == "number" and math.abs(a - b) <= 1e-7 * math.max(1, math.abs(b), scale or 0)) then

@@ -3,9 +3,7 @@
 -- the refusals; the calibration input's "conventions" key.
 local mud = require("lib.mud")
 local input_file = require("lib.calibration.input")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 
 -- The declared parameters as paddy.parameters would return them with no --set.
 local function declared(overrides)

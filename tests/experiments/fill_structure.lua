@@ -3,9 +3,7 @@
 -- sequential addition: no sphere with 10 neighbours, no peak at √2·d). A measure that cannot tell
 -- them apart, or a wrong core volume, fails here.
 local fill_structure = require("lib.fill_structure")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local d = 0.01
 local function box_sim(packing, extra)
   local sim = paddy.simulation{threads = 1}

@@ -2,9 +2,7 @@
 -- validation/yield_stress.lua) and the overburden σ_v = ρ_p φ g z, on torques with known answers.
 local mohr_coulomb = require("lib.mohr_coulomb")
 local measure = require("paddy.measure")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local function near(a, b, tol) return math.abs(a - b) <= tol end
 
 -- The overburden: 1680 kg/m³ particles at φ = 0.5, 60 mm deep → 1680·0.5·9.81·0.06 Pa.

@@ -8,9 +8,7 @@ local trigger = require("lib.trigger")
 local phase = require("lib.phase")
 local chart = require("lib.chart")
 local reference = require("lib.reference_measurement")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 
 -- A fake simulation: time and one quantity, set by hand.
 local clock = {t = 0, v = 0}

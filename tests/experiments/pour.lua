@@ -3,9 +3,7 @@
 -- the rim, or a settling time shorter than the fall, is refused.
 local pour = require("lib.pour")
 local util = require("lib.util")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local function near(a, b, tol) return math.abs(a - b) <= tol * math.abs(b) end
 
 -- Slump cone 100/200/300 mm: V = π h/3 (R² + R r + r²) = 5.4978 L; a cylinder π r² h.

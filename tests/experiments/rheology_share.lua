@@ -1,9 +1,7 @@
 -- lib/rheology.lua: the rate-dependent share K·D^n / (τ0 + K·D^n) of a Herschel-Bulkley fit and
 -- the "not a flow curve" warning of the rheometer, on fits with known answers.
 local rheology = require("lib.rheology")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local function near(a, b, tol) return math.abs(a - b) <= tol end
 
 -- Closed form: τ0 = 30 Pa, K = 10 Pa s^0.5, D = 100 1/s → K D^n = 100 Pa, share = 100/130.

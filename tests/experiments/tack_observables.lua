@@ -3,9 +3,7 @@
 -- change inside an interval), the range, the detachment, the release and the bin means on a fixed
 -- grid.
 local obs = require("lib.tack_observables")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local function near(a, b, tol) return math.abs(a - b) <= (tol or 1e-12) * math.max(1, math.abs(b)) end
 
 -- Moving average: a straight line is its own average away from the ends (the window is

@@ -2,9 +2,7 @@
 -- explicit-integration limit ω Δt ≤ 2(√(1+ζ²) − ζ) of a contact with damping ratio
 -- ζ = √(5/6)|ln e| / √(ln²e + π²) (Hertz-Mindlin damping), relative to the reference damping.
 local mud = require("lib.mud")
-local function check(cond, fmt, ...)
-  if not cond then error(string.format(fmt, ...), 2) end
-end
+local check = require("checks").check
 local P = {timestep_fraction = 0.2}
 local function c(e_mm, e_ms) return {mud_mud_restitution = e_mm, mud_steel_restitution = e_ms} end
 

@@ -1,0 +1,42 @@
+-- experiments.validation_ys: a study of seed 2 that pools a finished study of seed 1 (with_studies)
+-- must report what the study of seeds 1 and 2 together reports, from the same runs: every number
+-- of its runs, depth rows, summary and depth-series fits (per seed, pooled, at failure), to the
+-- 10 significant digits the pooled study's JSON keeps; and it must say which study it pooled.
+local P = paddy.parameters{
+  {name = "both", default = "", description = "output directory of the study of both seeds"},
+  {name = "pooled", default = "", description = "output directory of the study that pooled the other's seed"},
+  {name = "first", default = "", description = "output directory of the pooled study (seed 1)"},
+}
+local checks = require("checks")
+local check, near = checks.check, checks.near
+local REL = 1e-8
+
+local both = paddy.read_json(P.both .. "/yield_stress_study.json")
+local pooled = paddy.read_json(P.pooled .. "/yield_stress_study.json")
+
+-- Every leaf of a against the same leaf of b: numbers to REL, the rest equal; same keys both ways.
+local compared = 0
+local function same(a, b, where)
+  check(type(a) == type(b), "%s: %s against %s", where, type(a), type(b))
+  if type(a) == "number" then
+    near(a, b, REL, where)
+    compared = compared + 1
+  elseif type(a) == "table" then
+    for k, v in pairs(a) do same(v, b[k], where .. "." .. tostring(k)) end
+    for k in pairs(b) do check(a[k] ~= nil, "%s.%s only in the study of both seeds", where, tostring(k)) end
+  else
+    check(a == b, "%s: %s against %s", where, tostring(a), tostring(b))
+  end
+end
+for _, key in ipairs({"seeds", "runs", "summary", "depth_runs", "depth_series"}) do
+  check(both[key] ~= nil, "%s missing in the study of both seeds", key)
+  same(pooled[key], both[key], key)
+end
+check(#pooled.depth_runs == 4, "%d depth rows, expected 2 seeds x 2 levels", #pooled.depth_runs)
+check(pooled.depth_series.sets[1].failure ~= nil, "no line at failure in the pooled study")
+check(#pooled.pooled_studies == 1 and pooled.pooled_studies[1].study == P.first .. "/yield_stress_study.json",
+      "pooled_studies does not name %s", P.first)
+check(#pooled.pooled_studies[1].seeds == 1 and pooled.pooled_studies[1].seeds[1] == 1, "pooled_studies' seeds")
+check(both.pooled_studies == nil, "a study that pooled nothing lists pooled studies")
+check(compared > 100, "only %d numbers compared", compared)
+paddy.result{ok = true, compared = compared}
