@@ -27,7 +27,8 @@
 -- the stresses on their sheared surface during the start-up (rheometer.lua startup_stress_every,
 -- lib/vane_stress.lua) also the lines at failure, from the contact forces at the peak: τ_peak against
 -- the torque-weighted normal stress σ_n there ("failure"), and the side's own shear stress against
--- its normal stress σ_rr ("side"). Extra outputs: ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
+-- its normal stress σ_rr ("side"), and the static reading, τ_peak against σ_n as the vane started
+-- ("static"). Extra outputs: ys_depth_runs.csv, ys_depth_fit.csv, ys_depth.png.
 --
 -- More seeds for a finished study: with_studies = its output directory (several: comma-separated)
 -- and seeds = the new seeds only. The finished study's rows are read back from its
@@ -214,6 +215,12 @@ util.write_csv("ys_summary.csv", {"set", "value", "seeds", "vane_Pa", "vane_std_
 
 -- The depth series: per set the Mohr–Coulomb line of the vane's peak stress against the overburden
 -- at the blades' mid-height, per seed and pooled; c / τ_slump; the shallowest level against the slump.
+-- The lines from the stresses measured on the sheared surface (lib/mohr_coulomb.lua envelope): at
+-- failure, from those at the peak; and the static reading, the peak against the normal stress the
+-- vane started in (what validation/vane_fill_stress.lua reads from the fills run again).
+local AT_PEAK = {{name = "failure", sigma = "sigma_n_peak_Pa", tau = "vane_yield_stress_Pa", what = "against sigma_n measured at the peak"},
+                 {name = "side", sigma = "sigma_rr_peak_Pa", tau = "shear_side_peak_Pa", what = "the side's shear against its sigma_rr at the peak"},
+                 {name = "static", sigma = "sigma_n_start_Pa", tau = "vane_yield_stress_Pa", what = "against sigma_n measured as the vane starts"}}
 local depth_runs, depth = {}, nil
 local measured_at_peak = false  -- some vane measured its stresses at the peak
 if fill_levels then
@@ -294,9 +301,6 @@ if fill_levels then
                          report.cell(ds.janssen and ds.janssen.c_over_slump.mean),
                          report.cell(ds.janssen and ds.janssen.c_over_slump.std)}
   end
-  -- The lines at failure, from the stresses measured at the peak (lib/mohr_coulomb.lua envelope).
-  local AT_PEAK = {{name = "failure", sigma = "sigma_n_peak_Pa", tau = "vane_yield_stress_Pa"},
-                   {name = "side", sigma = "sigma_rr_peak_Pa", tau = "shear_side_peak_Pa"}}
   if measured_at_peak then
     for li, ds in ipairs(depth.sets) do
       local slump_of = {}
@@ -406,13 +410,12 @@ if depth then
                           j.pooled.c, j.pooled.se_c or 0 / 0, j.pooled.tan_phi, j.pooled.se_tan_phi or 0 / 0, "",
                           j.c_over_slump.mean or 0 / 0, j.c_over_slump.std or 0 / 0, j.lateral_ratio, j.wall_friction))
     end
-    for _, name in ipairs({"failure", "side"}) do
-      local e = ds[name]
+    for _, m in ipairs(AT_PEAK) do
+      local e = ds[m.name]
       if e and e.pooled then
         print(string.format("%-10s %8s  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16.3f  %7.3f +- %-6.3f  (%s)", "", "", e.pooled.c, e.pooled.se_c or 0 / 0,
                             e.pooled.tan_phi, e.pooled.se_tan_phi or 0 / 0, e.pooled_c_over_slump or 0 / 0, e.c_over_slump.mean or 0 / 0,
-                            e.c_over_slump.std or 0 / 0, name == "failure" and "against sigma_n measured at the peak"
-                                                          or "the side's shear against its sigma_rr at the peak"))
+                            e.c_over_slump.std or 0 / 0, m.what))
       end
     end
   end

@@ -24,6 +24,10 @@ local function same(a, b, where)
   elseif type(a) == "table" then
     for k, v in pairs(a) do same(v, b[k], where .. "." .. tostring(k)) end
     for k in pairs(b) do check(a[k] ~= nil, "%s.%s only in the study of both seeds", where, tostring(k)) end
+  elseif type(a) == "string" then
+    -- A fit's refusal quotes its numbers: compared to 8 digits as well.
+    local function digits(t) return (t:gsub("%-?%d+%.%d+", function(x) return string.format("%.8g", tonumber(x)) end)) end
+    check(digits(a) == digits(b), "%s: %s against %s", where, a, b)
   else
     check(a == b, "%s: %s against %s", where, tostring(a), tostring(b))
   end
