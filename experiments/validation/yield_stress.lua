@@ -45,7 +45,7 @@ local P = paddy.parameters{
   {name = "parameter", default = "jkr_surface_energy", description = "the mud parameter that differs between the sets"},
   {name = "values", default = "", description = "its values (comma-separated); empty: low, centre, high of table_parameter in table3_pb_levels.csv"},
   {name = "table_parameter", default = "jkr_surface_energy_mud", description = "the parameter's name in table3_pb_levels.csv (H7)"},
-  {name = "seeds", default = "1,2", description = "seeds of each set (comma-separated, at least 2 for a std)"},
+  {name = "seeds", default = "1,2", description = "seeds of each set (comma-separated, at least 2 for a std); empty with with_studies: run nothing, read those studies again"},
   {name = "slump_diameter", default = 0.014, unit = "m", min = 0.001, max = 0.04, description = "sphere diameter of the slump runs"},
   {name = "rheometer_diameter", default = 0.012, unit = "m", min = 0.001, max = 0.02, description = "sphere diameter of the rheometer runs"},
   {name = "slump_set", default = "", description = "extra slump.lua parameters for every run, e.g. 'max_time=4'"},
@@ -81,7 +81,9 @@ else
   end
   if #levels == 0 then error(path .. ": no row for parameter '" .. P.table_parameter .. "' (give values= or table_parameter=)") end
 end
-local seeds = report.seed_list(P.seeds)
+-- No seeds of its own (seeds empty) with with_studies: the study runs nothing and reads the pooled
+-- studies again (e.g. a finished study with this version's fits).
+local seeds = (P.seeds:match("^%s*$") and P.with_studies ~= "") and {} or report.seed_list(P.seeds)
 local dir = report.script_dir()
 local slump_extra, rheo_extra = ys_jobs.extras(P.parameter, P.slump_set, P.rheometer_set)
 -- The depth series: fill levels of the vane runs (false: one run at rheometer.lua's fill level, the
@@ -130,7 +132,7 @@ for li, l in ipairs(levels) do
 end
 io.stderr:write(string.format("yield_stress: %d sets x %d seeds x (1 slump + %d vane) = %d runs\n", #levels, #seeds,
                               fill_levels and #fill_levels or 1, #jobs))
-local results = c:run()
+local results = #jobs > 0 and c:run() or {}
 
 -- Every run becomes a row: one per set and seed (ys_runs.csv) and, with a depth series, one per
 -- set, seed and fill level (ys_depth_runs.csv). The statistics below read only these rows, so the

@@ -1,11 +1,13 @@
--- experiments.validation_ys: a study of seed 2 that pools a finished study of seed 1 (with_studies)
--- must report what the study of seeds 1 and 2 together reports, from the same runs: every number
--- of its runs, depth rows, summary and depth-series fits (per seed, pooled, at failure), to the
--- 10 significant digits the pooled study's JSON keeps; and it must say which study it pooled.
+-- experiments.validation_ys: a study of seed 2 that pools a finished study of seed 1 (with_studies),
+-- or a study without seeds of its own that reads the study of both again, must report what the
+-- study of seeds 1 and 2 together reports, from the same runs: every number of its runs, depth
+-- rows, summary and depth-series fits (per seed, pooled, at failure, static), to the 10 significant
+-- digits the pooled study's JSON keeps; and it must say which study it pooled, with its seeds.
 local P = paddy.parameters{
   {name = "both", default = "", description = "output directory of the study of both seeds"},
   {name = "pooled", default = "", description = "output directory of the study that pooled the other's seed"},
-  {name = "first", default = "", description = "output directory of the pooled study (seed 1)"},
+  {name = "first", default = "", description = "output directory of the study it pooled"},
+  {name = "first_seeds", default = 1, type = "integer", description = "seeds of that study (1, or 1 and 2)"},
 }
 local checks = require("checks")
 local check, near = checks.check, checks.near
@@ -40,7 +42,8 @@ check(#pooled.depth_runs == 4, "%d depth rows, expected 2 seeds x 2 levels", #po
 check(pooled.depth_series.sets[1].failure ~= nil, "no line at failure in the pooled study")
 check(#pooled.pooled_studies == 1 and pooled.pooled_studies[1].study == P.first .. "/yield_stress_study.json",
       "pooled_studies does not name %s", P.first)
-check(#pooled.pooled_studies[1].seeds == 1 and pooled.pooled_studies[1].seeds[1] == 1, "pooled_studies' seeds")
+check(#pooled.pooled_studies[1].seeds == P.first_seeds, "pooled_studies' seeds: %d, expected %d", #pooled.pooled_studies[1].seeds, P.first_seeds)
+for k, s in ipairs(pooled.pooled_studies[1].seeds) do check(s == k, "pooled_studies' seed %d is %s", k, tostring(s)) end
 check(both.pooled_studies == nil, "a study that pooled nothing lists pooled studies")
 check(compared > 100, "only %d numbers compared", compared)
 paddy.result{ok = true, compared = compared}

@@ -549,6 +549,17 @@ elseif(CASE STREQUAL "validation_ys")
   run_paddy(code se run ${HERE}/check_ys_pooled.lua --out chk_pooled --set both=${WORK}/out --set pooled=${WORK}/pooled
             --set first=${WORK}/first)
   expect_code(${code} 0)
+  # Without seeds of its own, the study runs nothing and reads the finished study again.
+  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out reread --threads 1 ${depth} --set seeds=
+            --set with_studies=${WORK}/out --set campaign_dir=${WORK}/reread_campaign)
+  expect_code(${code} 0)
+  file(GLOB reread_jobs ${WORK}/reread_campaign/jobs/*)
+  if(NOT se MATCHES "0 runs" OR reread_jobs)
+    message(FATAL_ERROR "a study without seeds ran something: ${se}")
+  endif()
+  run_paddy(code se run ${HERE}/check_ys_pooled.lua --out chk_reread --set both=${WORK}/out --set pooled=${WORK}/reread
+            --set first=${WORK}/out --set first_seeds=2)
+  expect_code(${code} 0)
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out twice --threads 1 ${depth} --set seeds=1,2
             --set with_studies=${WORK}/first)
   expect_code(${code} 2)
