@@ -48,9 +48,11 @@ end
 -- target = the agreement band (|c / τ_slump − 1| ≤ target). A fit that cannot be made (M.fit's
 -- refusals) is reported as its error, not raised. c counts as determined when the pooled fit puts
 -- it at least 2 standard errors above 0; only then can it be within the target.
--- → {per_seed = {{seed, fit, fit_error, slump_yield_stress_Pa, c_over_slump}, ...} (seeds ascending),
---    pooled =, pooled_error =, c_Pa = {mean, std, values}, c_over_slump = {mean, std, values},
---    pooled_c_over_slump =, c_determined =, c_within_target =}
+-- args.seeds (optional): the seeds to report, in that order, with an entry (its fit's error) also
+-- for a seed without points; default: the seeds that have points, ascending.
+-- → {per_seed = {{seed, points, fit, fit_error, slump_yield_stress_Pa, c_over_slump}, ...},
+--    pooled =, pooled_error =, c_Pa = {mean, std, values}, tan_phi = {mean, std, values},
+--    c_over_slump = {mean, std, values}, pooled_c_over_slump =, c_determined =, c_within_target =}
 function M.envelope(args)
   local function fit_or_error(sig, tau)
     local ok, f = pcall(M.fit, {sigma = sig, tau = tau})
@@ -70,13 +72,14 @@ function M.envelope(args)
   end
   table.sort(seeds)
   local out = {per_seed = {}}
-  local cs, ratios = {}, {}
-  for _, s in ipairs(seeds) do
-    local f, why = fit_or_error(by_seed[s].sig, by_seed[s].tau)
+  local cs, tans, ratios = {}, {}, {}
+  for _, s in ipairs(args.seeds or seeds) do
+    local b = by_seed[s] or {sig = {}, tau = {}}
+    local f, why = fit_or_error(b.sig, b.tau)
     local tau_slump = args.slump_of and args.slump_of[s]
-    local e = {seed = s, fit = f, fit_error = why, slump_yield_stress_Pa = tau_slump}
+    local e = {seed = s, points = #b.sig, fit = f, fit_error = why, slump_yield_stress_Pa = tau_slump}
     if f then
-      cs[#cs + 1] = f.c
+      cs[#cs + 1], tans[#tans + 1] = f.c, f.tan_phi
       if tau_slump then
         e.c_over_slump = f.c / tau_slump
         ratios[#ratios + 1] = e.c_over_slump
@@ -85,7 +88,7 @@ function M.envelope(args)
     out.per_seed[#out.per_seed + 1] = e
   end
   out.pooled, out.pooled_error = fit_or_error(all_s, all_t)
-  out.c_Pa, out.c_over_slump = summary(cs), summary(ratios)
+  out.c_Pa, out.tan_phi, out.c_over_slump = summary(cs), summary(tans), summary(ratios)
   if out.pooled and args.slump_mean then out.pooled_c_over_slump = out.pooled.c / args.slump_mean end
   out.c_determined = out.pooled ~= nil and out.pooled.se_c ~= nil and out.pooled.c > 2 * out.pooled.se_c
   out.c_within_target = out.c_determined and #ratios > 0 and math.abs(out.c_over_slump.mean - 1) <= args.target

@@ -228,69 +228,44 @@ local measured_at_peak = false  -- some vane measured its stresses at the peak
 if fill_levels then
   depth = {fill_levels = fill_levels, reference_fill_level = reference_fill and P.reference_fill_level or nil, sets = {}}
   local drows, frows = {}, {}
-  local function fit_or_error(sig, tau)
-    local ok, f = pcall(mohr_coulomb.fit, {sigma = sig, tau = tau})
-    if ok then return f end
-    return nil, tostring(f)
+  local function ms(v)
+    local m, sd = report.mean_std(v)
+    return {mean = m, std = sd, values = v}
   end
   for li, l in ipairs(levels) do
-    local pooled_s, pooled_t, pooled_j = {}, {}, {}
-    local cjs, cjratios = {}, {}
-    local cs, tans, cratios, shallow = {}, {}, {}, {}
-    local per_seed = {}
+    -- Per set the lines against the hydrostatic and (janssen_lateral_ratio > 0) Janssen's
+    -- overburden, per seed and pooled over the seeds (lib/mohr_coulomb.lua envelope).
+    local points, janssen_points, shallow, slump_of = {}, {}, {}, {}
     for _, s in ipairs(all_seeds) do
-      local tau_slump = run_of[li][s].slump_yield_stress_Pa
-      local sig, tau, sigj = {}, {}, {}
+      slump_of[s] = run_of[li][s].slump_yield_stress_Pa
       for fi in ipairs(fill_levels) do
         local row = depth_of[li][s][fi]
         if row.vane_yield_stress_Pa then
           if row.sigma_n_peak_Pa then measured_at_peak = true end
-          sig[#sig + 1], tau[#tau + 1] = row.sigma_v_Pa, row.vane_yield_stress_Pa
-          pooled_s[#pooled_s + 1], pooled_t[#pooled_t + 1] = row.sigma_v_Pa, row.vane_yield_stress_Pa
-          if row.sigma_janssen_Pa then sigj[#sigj + 1], pooled_j[#pooled_j + 1] = row.sigma_janssen_Pa, row.sigma_janssen_Pa end
+          points[#points + 1] = {seed = s, sigma = row.sigma_v_Pa, tau = row.vane_yield_stress_Pa}
+          if row.sigma_janssen_Pa then janssen_points[#janssen_points + 1] = {seed = s, sigma = row.sigma_janssen_Pa, tau = row.vane_yield_stress_Pa} end
           if row.ratio_to_slump then shallow[#shallow + 1] = row.ratio_to_slump end
         end
         depth_runs[#depth_runs + 1] = row
       end
-      local f, why = fit_or_error(sig, tau)
-      local ps = {seed = s, slump_yield_stress_Pa = tau_slump, points = #sig, fit = f, fit_error = why}
-      if f then
-        cs[#cs + 1], tans[#tans + 1] = f.c, f.tan_phi
-        if tau_slump then
-          ps.c_over_slump = f.c / tau_slump
-          cratios[#cratios + 1] = ps.c_over_slump
-        end
-      end
-      if #sigj > 0 then
-        ps.janssen_fit, ps.janssen_fit_error = fit_or_error(sigj, tau)
-        if ps.janssen_fit then
-          cjs[#cjs + 1] = ps.janssen_fit.c
-          if tau_slump then cjratios[#cjratios + 1] = ps.janssen_fit.c / tau_slump end
-        end
-      end
-      per_seed[#per_seed + 1] = ps
     end
-    local pooled, why = fit_or_error(pooled_s, pooled_t)
-    local function ms(v)
-      local m, sd = report.mean_std(v)
-      return {mean = m, std = sd, values = v}
+    local slump = summary[li].slump_yield_stress_Pa
+    local function line(pts)
+      return mohr_coulomb.envelope{points = pts, seeds = all_seeds, slump_of = slump_of, slump_mean = slump.mean, target = P.target}
     end
-    local ds = {set = l.label, value = l.value, per_seed = per_seed, pooled = pooled, pooled_error = why,
-                c_Pa = ms(cs), tan_phi = ms(tans), c_over_slump = ms(cratios), shallow_over_slump = ms(shallow),
-                slump_yield_stress_Pa = summary[li].slump_yield_stress_Pa}
-    if pooled and ds.slump_yield_stress_Pa.mean then ds.pooled_c_over_slump = pooled.c / ds.slump_yield_stress_Pa.mean end
-    if #pooled_j > 0 then
-      ds.janssen = {lateral_ratio = P.janssen_lateral_ratio, wall_friction = P.janssen_wall_friction, c_Pa = ms(cjs),
-                    c_over_slump = ms(cjratios)}
-      ds.janssen.pooled, ds.janssen.pooled_error = fit_or_error(pooled_j, pooled_t)
-    end
-    -- The intercept is determined when the pooled fit puts it at least 2 standard errors above 0;
-    -- otherwise the ratio's agreement says nothing and within_target is false.
-    ds.c_determined = pooled ~= nil and pooled.se_c ~= nil and pooled.c > 2 * pooled.se_c
-    ds.c_within_target = ds.c_determined and #cratios > 0 and math.abs(ds.c_over_slump.mean - 1) <= P.target
+    local ds = line(points)
+    ds.set, ds.value, ds.slump_yield_stress_Pa = l.label, l.value, slump
+    ds.shallow_over_slump = ms(shallow)
     ds.shallow_within_target = #shallow > 0 and math.abs(ds.shallow_over_slump.mean - 1) <= P.target
+    if #janssen_points > 0 then
+      local j = line(janssen_points)
+      for k, ps in ipairs(ds.per_seed) do ps.janssen_fit, ps.janssen_fit_error = j.per_seed[k].fit, j.per_seed[k].fit_error end
+      ds.janssen = {lateral_ratio = P.janssen_lateral_ratio, wall_friction = P.janssen_wall_friction, c_Pa = j.c_Pa,
+                    c_over_slump = j.c_over_slump, pooled = j.pooled, pooled_error = j.pooled_error}
+    end
+    local pooled = ds.pooled
     depth.sets[li] = ds
-    frows[#frows + 1] = {l.label, l.value, #cs, report.cell(pooled and pooled.c), report.cell(pooled and pooled.se_c),
+    frows[#frows + 1] = {l.label, l.value, #ds.c_Pa.values, report.cell(pooled and pooled.c), report.cell(pooled and pooled.se_c),
                          report.cell(pooled and pooled.tan_phi), report.cell(pooled and pooled.se_tan_phi),
                          report.cell(pooled and pooled.r2), report.cell(ds.c_Pa.mean), report.cell(ds.c_Pa.std),
                          report.cell(ds.tan_phi.mean), report.cell(ds.tan_phi.std), report.cell(ds.slump_yield_stress_Pa.mean),

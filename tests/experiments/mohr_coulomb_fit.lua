@@ -127,5 +127,15 @@ env = mohr_coulomb.envelope{points = {{seed = 1, sigma = 200, tau = 200}, {seed 
 check(env.per_seed[2].fit == nil and tostring(env.per_seed[2].fit_error):find("at least 2"), "envelope: a one-point seed's error")
 check(env.pooled.n == 3 and near(env.pooled.c, 100, 1e-12), "envelope: the one point in the pool")
 check(env.c_within_target == false or env.c_determined, "envelope: within target only when determined")
+-- seeds = {...}: the seeds reported in that order, a seed without points with its fit's error and
+-- 0 points; the slopes over the seeds (0.3 and 0.5: mean 0.4, std √0.02) as tan_phi.
+env = mohr_coulomb.envelope{points = {{seed = 2, sigma = 200, tau = 240}, {seed = 1, sigma = 200, tau = 200},
+                              {seed = 1, sigma = 400, tau = 300}, {seed = 2, sigma = 400, tau = 300}},
+                            seeds = {2, 5, 1}, slump_of = {[1] = 80, [2] = 100}, slump_mean = 90, target = 0.25}
+check(#env.per_seed == 3 and env.per_seed[1].seed == 2 and env.per_seed[2].seed == 5 and env.per_seed[3].seed == 1, "envelope: the seeds as given")
+check(env.per_seed[2].points == 0 and env.per_seed[2].fit == nil and env.per_seed[2].fit_error ~= nil, "envelope: a seed without points")
+check(env.per_seed[1].points == 2 and near(env.per_seed[1].fit.tan_phi, 0.3, 1e-12), "envelope: seed 2's line")
+check(near(env.tan_phi.mean, 0.4, 1e-12) and near(env.tan_phi.std, math.sqrt(0.02), 1e-12) and #env.tan_phi.values == 2,
+      "envelope: tan_phi over the seeds %.17g, %.17g", env.tan_phi.mean, env.tan_phi.std)
 
 paddy.result{ok = true}
