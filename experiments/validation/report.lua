@@ -39,12 +39,14 @@ end
 
 -- gnuplot plot clauses of one set in a Mohr–Coulomb depth picture: its points (columns `using` of
 -- `file`, titled points_title), its line τ = c + σ tanφ (`line`: a lib/mohr_coulomb.lua fit, or nil)
--- and its slump yield stress as a dashed level (nil: none), all in `color`.
-function M.depth_plot_clauses(file, using, color, label, points_title, line, tau_slump)
-  local out = {string.format("'%s' using %s with points pt 7 ps 1.3 lc rgb '%s' title '%s: %s'", file, using, color, label, points_title)}
+-- and its slump yield stress as a dashed level (nil: none), all in `color`; point_type: gnuplot's
+-- pt (default 7, filled circles), the line dashed (dt 3) when it is not 7.
+function M.depth_plot_clauses(file, using, color, label, points_title, line, tau_slump, point_type)
+  local pt = point_type or 7
+  local out = {string.format("'%s' using %s with points pt %d ps 1.3 lc rgb '%s' title '%s: %s'", file, using, pt, color, label, points_title)}
   if line then
-    out[#out + 1] = string.format("%g + %g * x lc rgb '%s' title sprintf('%s: c = %%.0f +- %%.0f Pa, tan phi = %%.2f', %g, %g, %g)",
-                                  line.c, line.tan_phi, color, label, line.c, line.se_c or 0, line.tan_phi)
+    out[#out + 1] = string.format("%g + %g * x lc rgb '%s'%s title sprintf('%s: c = %%.0f +- %%.0f Pa, tan phi = %%.2f', %g, %g, %g)",
+                                  line.c, line.tan_phi, color, pt == 7 and "" or " dt 3", label, line.c, line.se_c or 0, line.tan_phi)
   end
   if tau_slump then out[#out + 1] = string.format("%g lc rgb '%s' dt 2 title '%s: tau_slump'", tau_slump, color, label) end
   return out

@@ -355,6 +355,30 @@ plot '%s' using 1:2:3 with yerrorbars pt 7 ps 1.5 title 'ratio', 1 lc rgb 'black
     end
     pictures.depth = report.depth_picture("ys_depth", "Vane peak stress against the overburden at blade mid-height (Mohr-Coulomb fit, pooled seeds)",
                                           "sigma_v = rho_bulk g z [Pa]", "shear stress [Pa]", plots)
+    -- With the stresses measured on the sheared surface: the peak against σ_n as the vane started
+    -- (the static line, filled) and at the peak (the line at failure, open), ys_measured.png.
+    if measured_at_peak then
+      local mplots = {}
+      for li, ds in ipairs(depth.sets) do
+        local pts = {}
+        for _, r in ipairs(depth_runs) do
+          if r.set == ds.set and r.sigma_n_start_Pa and r.sigma_n_peak_Pa then
+            pts[#pts + 1] = {r.sigma_n_start_Pa, r.sigma_n_peak_Pa, r.vane_yield_stress_Pa, r.seed}
+          end
+        end
+        local f = util.write_columns("ys_measured_" .. li .. ".dat", "sigma_n_start_Pa sigma_n_peak_Pa vane_yield_stress_Pa seed", pts)
+        local col = colors[(li - 1) % #colors + 1]
+        for _, clause in ipairs(report.depth_plot_clauses(f, "1:3", col, ds.set, "as it starts", ds.static and ds.static.pooled,
+                                                          ds.slump_yield_stress_Pa.mean)) do
+          mplots[#mplots + 1] = clause
+        end
+        for _, clause in ipairs(report.depth_plot_clauses(f, "2:3", col, ds.set, "at the peak", ds.failure and ds.failure.pooled, nil, 6)) do
+          mplots[#mplots + 1] = clause
+        end
+      end
+      pictures.measured = report.depth_picture("ys_measured", "Vane peak stress against the normal stress measured on the sheared surface (pooled seeds)",
+                                               "sigma_n [Pa]", "shear stress [Pa]", mplots)
+    end
   end
 end
 

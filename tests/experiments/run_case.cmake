@@ -503,7 +503,7 @@ elseif(CASE STREQUAL "validation_ys")
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out out --threads 1 ${tiny}
             --set vane_fill_levels=0.102,0.12)
   expect_code(${code} 0)
-  expect_outputs(out ys_runs.csv ys_summary.csv yield_stress_study.json ys_ratio.png ys_depth_runs.csv ys_depth_fit.csv ys_depth.png)
+  expect_outputs(out ys_runs.csv ys_summary.csv yield_stress_study.json ys_ratio.png ys_depth_runs.csv ys_depth_fit.csv ys_depth.png ys_measured.png)
   expect_none_failed("failed runs")
   result(n depth_series sets 0 pooled n)
   expect_number(${n} EQUAL 4 "points of the pooled fit")
