@@ -232,10 +232,13 @@ if fill_levels then
     local m, sd = report.mean_std(v)
     return {mean = m, std = sd, values = v}
   end
+  local measured_of, slump_of_set = {}, {}  -- per set: the AT_PEAK lines' points, τ_slump per seed
   for li, l in ipairs(levels) do
     -- Per set the lines against the hydrostatic and (janssen_lateral_ratio > 0) Janssen's
     -- overburden, per seed and pooled over the seeds (lib/mohr_coulomb.lua envelope).
     local points, janssen_points, shallow, slump_of = {}, {}, {}, {}
+    local measured = {}
+    for _, e in ipairs(AT_PEAK) do measured[e.name] = {} end
     for _, s in ipairs(all_seeds) do
       slump_of[s] = run_of[li][s].slump_yield_stress_Pa
       for fi in ipairs(fill_levels) do
@@ -246,9 +249,16 @@ if fill_levels then
           if row.sigma_janssen_Pa then janssen_points[#janssen_points + 1] = {seed = s, sigma = row.sigma_janssen_Pa, tau = row.vane_yield_stress_Pa} end
           if row.ratio_to_slump then shallow[#shallow + 1] = row.ratio_to_slump end
         end
+        for _, e in ipairs(AT_PEAK) do
+          if row[e.sigma] and row[e.tau] then
+            local m = measured[e.name]
+            m[#m + 1] = {seed = s, sigma = row[e.sigma], tau = row[e.tau]}
+          end
+        end
         depth_runs[#depth_runs + 1] = row
       end
     end
+    measured_of[li], slump_of_set[li] = measured, slump_of
     local slump = summary[li].slump_yield_stress_Pa
     local function line(pts)
       return mohr_coulomb.envelope{points = pts, seeds = all_seeds, slump_of = slump_of, slump_mean = slump.mean, target = P.target}
@@ -280,14 +290,9 @@ if fill_levels then
   end
   if measured_at_peak then
     for li, ds in ipairs(depth.sets) do
-      local slump_of = {}
-      for _, ps in ipairs(ds.per_seed) do slump_of[ps.seed] = ps.slump_yield_stress_Pa end
       for _, e in ipairs(AT_PEAK) do
-        local points = {}
-        for _, r in ipairs(depth_runs) do
-          if r.set == levels[li].label and r[e.sigma] and r[e.tau] then points[#points + 1] = {seed = r.seed, sigma = r[e.sigma], tau = r[e.tau]} end
-        end
-        ds[e.name] = mohr_coulomb.envelope{points = points, slump_of = slump_of, slump_mean = ds.slump_yield_stress_Pa.mean, target = P.target}
+        ds[e.name] = mohr_coulomb.envelope{points = measured_of[li][e.name], slump_of = slump_of_set[li],
+                                           slump_mean = ds.slump_yield_stress_Pa.mean, target = P.target}
         local env = ds[e.name]
         for _, cell in ipairs({report.cell(env.pooled and env.pooled.c), report.cell(env.pooled and env.pooled.se_c),
                                report.cell(env.pooled and env.pooled.tan_phi), report.cell(env.c_over_slump.mean),

@@ -66,6 +66,11 @@ local function same_number(a, b)
   return type(a) == "number" and type(b) == "number" and math.abs(a - b) <= 1e-9 * math.max(1, math.abs(a), math.abs(b))
 end
 
+-- The index of the set of `levels` whose value is `value` (nil: none).
+local function level_of(levels, value)
+  for li, l in ipairs(levels) do if same_number(l.value, value) then return li end end
+end
+
 local function list_text(v)
   if type(v) ~= "table" then return tostring(v) end
   local t = {}
@@ -78,7 +83,7 @@ end
 -- same design as this one (st: levels, seeds, fill_levels; P: the parameter, both sphere sizes, the
 -- extra settings of both tests, Janssen's K and wall friction) and none of this study's or another
 -- pooled study's seeds; anything else is refused, naming the study and the setting. Returns the
--- list of {file, doc, level_of} for M.pool.
+-- list of {file, doc} for M.pool.
 function M.load_studies(P, st)
   local paths = {}
   for item in P.with_studies:gmatch("[^,]+") do
@@ -107,11 +112,8 @@ function M.load_studies(P, st)
     for _, s in ipairs(doc.summary or {}) do theirs[#theirs + 1] = s.value end
     local ours = {}
     for k, l in ipairs(st.levels) do ours[k] = l.value end
-    local function level_of(value)
-      for li, l in ipairs(st.levels) do if same_number(l.value, value) then return li end end
-    end
     local matched = #theirs == #ours
-    for _, v in ipairs(theirs) do matched = matched and level_of(v) ~= nil end
+    for _, v in ipairs(theirs) do matched = matched and level_of(st.levels, v) ~= nil end
     if not matched then refuse("the sets' values", list_text(theirs), list_text(ours)) end
     -- The depth series: the same fill levels and the same Janssen overburden.
     local ds = doc.depth_series
@@ -140,7 +142,7 @@ function M.load_studies(P, st)
       end
       taken[s] = file
     end
-    loaded[#loaded + 1] = {file = file, doc = doc, level_of = level_of}
+    loaded[#loaded + 1] = {file = file, doc = doc}
   end
   return loaded
 end
@@ -167,14 +169,14 @@ function M.pool(loaded, st)
       end
     end
     for _, r in ipairs(doc.runs or {}) do
-      local li = study.level_of(r.value)
+      local li = level_of(st.levels, r.value)
       if li and mine[r.seed] then
         r.set = st.levels[li].label
         st.run_of[li][r.seed] = r
       end
     end
     for _, r in ipairs(doc.depth_runs or {}) do
-      local li = study.level_of(r.value)
+      local li = level_of(st.levels, r.value)
       if li and mine[r.seed] and st.fill_levels then
         for fi, fl in ipairs(st.fill_levels) do
           if same_number(r.fill_level, fl) then
