@@ -560,12 +560,12 @@ elseif(CASE STREQUAL "validation_ys")
   run_paddy(code se run ${HERE}/check_ys_pooled.lua --out chk_reread --set both=${WORK}/out --set pooled=${WORK}/reread
             --set first=${WORK}/out --set first_seeds=2)
   expect_code(${code} 0)
-  run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out twice --threads 1 ${depth} --set seeds=1,2
-            --set with_studies=${WORK}/first)
-  expect_code(${code} 2)
-  if(NOT se MATCHES "first/yield_stress_study.json: seed 1 is also in this study")
-    message(FATAL_ERROR "a seed pooled twice: expected a refusal, got: ${se}")
-  endif()
+  # Refused before anything runs: a seed already in this study, a directory without a study, a
+  # study without a depth series (plain) pooled into one with.
+  set(pool_args run ${SOURCE}/experiments/validation/yield_stress.lua --threads 1 ${depth} --set seeds=1,2)
+  expect_refusals(pool_args twice with_studies=${WORK}/first "first/yield_stress_study.json: seed 1 is also in this study"
+                            missing with_studies=${WORK}/nowhere "nowhere: no yield_stress_study.json there"
+                            flat with_studies=${WORK}/plain "vane_fill_levels is none there, 0.102,0.12 here")
   run_paddy(code se run ${SOURCE}/experiments/validation/yield_stress.lua --out other --threads 1 ${tiny} --set seeds=2
             --set vane_fill_levels=0.102,0.15 --set campaign_dir=${WORK}/out/campaign --set with_studies=${WORK}/first)
   expect_code(${code} 2)
