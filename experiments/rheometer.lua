@@ -66,7 +66,8 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "set by contact_conventions / material unless given (paddy 0.1, edem 0.2; paddy_calibrated: 0.0804 as calibrated); time step / Rayleigh time at the reference damping (the slump test is converged at 0.1, not at 0.2); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "set by contact_conventions / material unless given; shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in (a poured fill needs at least its fall time plus min_rest_time)"},
-  {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
+  {name = "settle_rest_of", default = "fill", choices = {"fill", "all"}, description = "the settling ends when these spheres are at rest: fill (those the strike-off keeps, once the pour has landed) or all (the excess too: the rule before 7 Dec 2026, to repeat earlier runs); lib/pour.lua settled"},
+  {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "settled: RMS speed sqrt(2 KE / M) of the spheres below the strike-off level below this, once the pour has landed (lib/pour.lua settled)"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
   {name = "insert_time", default = 0.05, unit = "s", min = 0, max = 5, description = "settling after the vane is inserted"},
   {name = "fill_only", default = false, description = "stop once the vane is in: the fill and the stress state around the vane (fill_stress: lib/vane_stress.lua), no torque; the fill is the one a full run with the same parameters and seed starts from"},
@@ -129,7 +130,7 @@ local dt = sim:timestep{fraction = dt_fraction}
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("rheometer: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", filled, d * 1000, cg.alpha, dt))
 local settle, struck = pour.settle_and_strike(sim, {who = "rheometer", poured = poured, level = P.fill_level,
-  settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time, rest_speed = P.rest_speed,
+  settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time, rest_speed = P.rest_speed, rest_of = P.settle_rest_of,
   snapshot_every = snapshot_every, progress = P.progress})
 local settle_time = settle.duration
 local fill_solid, structure = fill_structure.measure_fill("rheometer", sim,
@@ -184,7 +185,7 @@ local fill_fields = {
   fill_stress = fill_stress,          -- around the vane as it starts (lib/vane_stress.lua)
   hopper_height_m = poured and poured.hopper_height or nil,
   fill_structure = structure,
-  settle_time_s = settle_time, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
+  settle_time_s = settle_time, settle_stopped_by = settle.stopped_by or "settle_max_time", time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   material = P.material_info,  -- conventions and material set used, with their source (lib/mud.lua)
   coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
                      scaled_params = cg.params, changed = cg.changed, rows = cg.rows},

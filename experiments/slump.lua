@@ -6,8 +6,8 @@
 -- 1. Fill the steel cone (inner diameters 100/200 mm, 300 mm high) standing on a steel plate
 --    with mud spheres (seeded; monodisperse or normal sizes), poured: placed at random, loose, in
 --    the cone and in a hopper on its rim (lib/pour.lua); let them settle inside the fixed cone
---    until at rest (kinetic-energy criterion); strike off the excess above the rim, as the
---    standard prescribes.
+--    until the fill below the rim is at rest (its kinetic energy, once the pour has landed:
+--    lib/pour.lua settled); strike off the excess above the rim, as the standard prescribes.
 -- 2. Lift the cone at lift_speed. The lift stops when the cone's bottom edge is `clearance`
 --    above the highest particle under it (the cone is then free of the pile; lifting it further
 --    would only cost time: 300 mm at 0.05 m/s = 6 s).
@@ -53,6 +53,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "lift_rolling_integration", default = "same", choices = {"same", "implicit", "explicit"},
    description = "integration of the type A rolling torque from the strike-off on (same: as during the fill; implicit or explicit: switch the contact laws before the lift): separates the torque's effect on the fill from its effect on the collapse"},
   {name = "settle_max_time", default = 2.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone (a poured fill needs at least its fall time plus min_rest_time)"},
+  {name = "settle_rest_of", default = "fill", choices = {"fill", "all"}, description = "the settling ends when these spheres are at rest: fill (those the strike-off keeps, once the pour has landed) or all (the excess too: the rule before 7 Dec 2026, to repeat earlier runs); lib/pour.lua settled"},
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
   {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
   {name = "slump_tolerance", default = 0.001, unit = "m", min = 0, max = 0.1, description = "see rest_window (0: KE criterion only)"},
@@ -159,9 +160,10 @@ local function measure_slump()
   return sim:measure_slump{cone_height = H, axis = {0, 0}, base_z = 0}
 end
 
--- 1. Settle inside the fixed cone until at rest (kinetic energy, or the top under the cone steady
--- within slump_tolerance over rest_window), then strike off at the rim.
-local settle_time, struck = 0, 0
+-- 1. Settle inside the fixed cone until the fill below the rim is at rest (its kinetic energy once
+-- the pour has landed, lib/pour.lua settled; or the top under the cone steady within
+-- slump_tolerance over rest_window), then strike off at the rim.
+local settle_time, settle_stop, struck = 0, nil, 0
 if cone then
   local t_settle = sim:time()
   local tops = sampler.new{
@@ -171,10 +173,10 @@ if cone then
   local settle = phase.run(sim, {
     duration = P.settle_max_time, every = P.history_interval, snapshot_every = snapshot_every, progress = P.progress,
     sample = tops,
-    stop = trigger.all{trigger.elapsed(P.min_rest_time),
-                       trigger.any{trigger.at_rest(P.rest_speed), trigger.steady(tops, "top", P.rest_window, P.slump_tolerance)}},
+    stop = pour.settled(poured, H, P.min_rest_time, P.rest_speed, {trigger.steady(tops, "top", P.rest_window, P.slump_tolerance)},
+                        P.settle_rest_of),
   })
-  settle_time = settle.duration
+  settle_time, settle_stop = settle.duration, settle.stopped_by or "settle_max_time"
   struck = sim:remove_if(function(i, x, y, z, r) return z + r > H end)
   if poured then
     pour.check_full("slump", struck, H)
@@ -371,6 +373,7 @@ paddy.result{
   lift_stop_s = lift_stop and lift_stop - t_lift or nil,
   cone_lift_mm = cone and P.lift_speed * ((lift_stop or sim:time()) - t_lift) * 1000 or 0,
   settle_time_s = settle_time,
+  settle_stopped_by = settle_stop,  -- fill_kinetic_energy, top_steady, kinetic_energy (settle_rest_of = all) or settle_max_time
   particles = particles, filled = filled, struck_off = struck, packing = P.packing,
   fill_solid_fraction = fill_solid,          -- in the cone as the lift starts
   fill_initial_solid_fraction = solid_fraction,  -- as placed (poured: the loose spheres in the cone)

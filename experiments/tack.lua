@@ -88,7 +88,8 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "set by contact_conventions / material unless given (paddy 0.1, edem 0.2; paddy_calibrated: 0.0804 as calibrated); time step / Rayleigh time at the reference damping; shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "set by contact_conventions / material unless given; shorten the step for restitutions below 0.13"},
   {name = "settle_max_time", default = 0.6, unit = "s", min = 0, max = 20, description = "longest settling of the poured fill (at least its fall time plus min_rest_time)"},
-  {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this"},
+  {name = "settle_rest_of", default = "fill", choices = {"fill", "all"}, description = "the settling ends when these spheres are at rest: fill (those the strike-off keeps, once the pour has landed) or all (the excess too: the rule before 7 Dec 2026, to repeat earlier runs); lib/pour.lua settled"},
+  {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "settled: RMS speed sqrt(2 KE / M) of the spheres below the strike-off level below this, once the pour has landed (lib/pour.lua settled)"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
   {name = "relax_time", default = 0.05, unit = "s", min = 0, max = 5,
    description = "the mud rests this long after the strike-off before the plate is placed (the unloaded surface springs back ~0.1 mm)"},
@@ -142,7 +143,7 @@ local dt = sim:timestep{fraction = dt_fraction}
 local snapshot_every = P.snapshot_interval > 0 and P.snapshot_interval or nil
 io.stderr:write(string.format("tack: %d particles of %.1f mm (alpha = %.2f), dt = %.3g s\n", poured.filled, d * 1000, cg.alpha, dt))
 local settle, struck = pour.settle_and_strike(sim, {who = "tack", poured = poured, level = P.cup_depth,
-  settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time, rest_speed = P.rest_speed,
+  settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time, rest_speed = P.rest_speed, rest_of = P.settle_rest_of,
   snapshot_every = snapshot_every, progress = P.progress})
 local fill_solid, structure = fill_structure.measure_fill("tack", sim,
   {type = "cylinder", base = {0, 0, 0}, radius = R_cup, height = P.cup_depth}, d)
@@ -331,7 +332,7 @@ paddy.result{
   cup_diameter = P.cup_diameter, cup_depth = P.cup_depth, mud_density = P.mud_density,
   particles = particles, filled = poured.filled, struck_off = struck,
   fill_solid_fraction = fill_solid, hopper_height_m = poured.hopper_height, fill_structure = structure,
-  settle_time_s = settle.duration, time_step = dt, time_step_fraction = dt_fraction,
+  settle_time_s = settle.duration, settle_stopped_by = settle.stopped_by or "settle_max_time", time_step = dt, time_step_fraction = dt_fraction,
   time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),

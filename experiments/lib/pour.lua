@@ -65,6 +65,34 @@ function M.fill(sim, spec)
   return out
 end
 
+-- Earliest time the settled fill can count as at rest: the free fall of the highest loose sphere
+-- down to the strike-off level (0 for a fill placed without a pour). Before it the stream may
+-- still be landing on the fill, which the fill's own RMS speed does not see between two samples.
+function M.landing_time(fill, level)
+  if not fill or not (fill.top_z > level) then return 0 end
+  return M.fall_time(fill.top_z - level)
+end
+
+-- The settling's stop rule: at least min_rest_time and the landing time (M.landing_time) after the
+-- start, then the spheres the strike-off at `level` keeps (wholly below it) at rest: their RMS
+-- speed below rest_speed (util.rms_speed). The excess above the level is not waited for: it is
+-- removed, and what it still does after the stream has landed (the hopper's column compacting,
+-- spheres bouncing on top) does not move the fill below (docs/experiments.md, "Fill"). `extra`: more
+-- triggers, any of which may stand in for the fill at rest (slump.lua: the top steady).
+-- rest_of = "all": every sphere at rest, the excess included, after min_rest_time only (the rule
+-- before 7 Dec 2026, kept to repeat earlier runs); default "fill".
+M.rest_of_choices = {"fill", "all"}
+function M.settled(fill, level, min_rest_time, rest_speed, extra, rest_of)
+  local all = rest_of == "all"
+  if rest_of ~= nil and not all and rest_of ~= "fill" then
+    error(string.format("lib/pour.lua: settle_rest_of = %s; allowed: fill, all", tostring(rest_of)), 2)
+  end
+  local rest = {all and trigger.at_rest(rest_speed) or trigger.at_rest(rest_speed, level)}
+  for _, t in ipairs(extra or {}) do rest[#rest + 1] = t end
+  local wait = all and min_rest_time or math.max(min_rest_time, M.landing_time(fill, level))
+  return trigger.all{trigger.elapsed(wait), trigger.any(rest)}
+end
+
 -- Refuses a settling time too short for the pour to land: the free fall from the top of the
 -- loose spheres plus the shortest settling (min_rest_time). `who` names the script.
 function M.check_settle_time(who, fill, settle_max_time, min_rest_time)
@@ -91,15 +119,15 @@ function M.remove_hopper(sim, fill)
   if fill.hopper then sim:set_motion(fill.hopper, {type = "translate", velocity = {0, 0, 2.0}}) end
 end
 
--- Settles a fill in its container and strikes it off at `level`: runs until at rest (RMS speed
--- below rest_speed, after at least min_rest_time; at most settle_max_time), removes every sphere
+-- Settles a fill in its container and strikes it off at `level`: runs until the fill below the
+-- level is at rest (M.settled; at most settle_max_time), removes every sphere
 -- standing above the level, and for a poured fill (`poured`, from M.fill) checks that it was full
 -- (M.check_full) and sends its hopper away. o: who (the script's name), poured (nil for a fill
--- placed without a hopper), level, settle_max_time, min_rest_time, rest_speed, snapshot_every,
--- progress. → the settling phase (phase.run's result), spheres struck off
+-- placed without a hopper), level, settle_max_time, min_rest_time, rest_speed, rest_of (M.settled),
+-- snapshot_every, progress. → the settling phase (phase.run's result), spheres struck off
 function M.settle_and_strike(sim, o)
   local settle = phase.run(sim, {duration = o.settle_max_time, every = 0.02, snapshot_every = o.snapshot_every, progress = o.progress,
-                                 stop = trigger.all{trigger.elapsed(o.min_rest_time), trigger.at_rest(o.rest_speed)}})
+                                 stop = M.settled(o.poured, o.level, o.min_rest_time, o.rest_speed, nil, o.rest_of)})
   local struck = sim:remove_if(function(i, x, y, z, r) return z + r > o.level end)
   if o.poured then
     M.check_full(o.who, struck, o.level)

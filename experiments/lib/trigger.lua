@@ -33,9 +33,10 @@ function M.elapsed(duration, since)
   end
 end
 
--- At rest: the particles' RMS speed sqrt(2 KE / M) (util.rms_speed) below `speed`.
-function M.at_rest(speed)
-  return M.named("kinetic_energy", function(s) return util.rms_speed(s) < speed end)
+-- At rest: the particles' RMS speed sqrt(2 KE / M) (util.rms_speed) below `speed`. With `top`,
+-- the RMS speed of the spheres wholly below z = top (fires as "fill_kinetic_energy").
+function M.at_rest(speed, top)
+  return M.named(top and "fill_kinetic_energy" or "kinetic_energy", function(s) return util.rms_speed(s, top) < speed end)
 end
 
 -- The last row of `sampler` has `name` below `limit` (a quantity the phase samples anyway).

@@ -6,15 +6,21 @@ local M = {}
 -- rotational part is left out: the rest criterion asks whether the mud still flows, and a
 -- sphere spinning in place (held by its neighbours) does not move the pile. Every sphere has the
 -- mud's density, so its mass is proportional to r^3 and the weights need no density.
-function M.rms_speed(sim)
+-- With `top`, only the spheres wholly below z = top (z + r <= top: what a strike-off at that
+-- level keeps).
+function M.rms_speed(sim, top)
   local v = sim:velocities()
   local radii = sim:radii()
+  local zs
+  if top then zs = select(3, sim:xyz()) end
   local sum, mass = 0, 0
   for i = 1, #v do
-    local m = radii[i] ^ 3
-    local w = v[i]
-    sum = sum + m * (w[1] * w[1] + w[2] * w[2] + w[3] * w[3])
-    mass = mass + m
+    if not zs or zs[i] + radii[i] <= top then
+      local m = radii[i] ^ 3
+      local w = v[i]
+      sum = sum + m * (w[1] * w[1] + w[2] * w[2] + w[3] * w[3])
+      mass = mass + m
+    end
   end
   if mass <= 0 then return 0 end
   return math.sqrt(sum / mass)
