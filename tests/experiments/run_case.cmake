@@ -252,6 +252,13 @@ elseif(CASE STREQUAL "slump_mini")
   expect_number(${phi} LESS 0.64 "fill_solid_fraction")
   expect_number(${hopper} GREATER 0.1 "hopper_height_m")
   expect_number(${spread0} GREATER 100 "history slump_flow_mm")
+  # The settling stops by the rule of lib/pour.lua settled or its time limit, never by the old
+  # rule's all spheres at rest (settle_rest_of = all). Under the edem conventions' explicit rolling
+  # torque this fill creeps and reaches the 1 s limit; the paddy path comes to rest (rheometer_mini).
+  result(settle_by settle_stopped_by)
+  if(NOT settle_by MATCHES "^(fill_kinetic_energy|top_steady|settle_max_time)$")
+    message(FATAL_ERROR "the settling stopped by '${settle_by}' (expected fill_kinetic_energy, top_steady or settle_max_time)")
+  endif()
   # A settling time shorter than the pour's fall is refused at the script's line, with the minimum.
   run_paddy(code se run ${SOURCE}/experiments/slump.lua --out short --threads 1 --set particle_diameter=0.022
             --set settle_max_time=0.2)
@@ -349,6 +356,12 @@ elseif(CASE STREQUAL "rheometer_mini")
   run_paddy(code se run ${SOURCE}/experiments/rheometer.lua --out out --threads 1 --seed 3
             ${rheometer_mini_args})
   expect_code(${code} 0)
+  # The cup's fill came to rest below the fill level once the pour had landed (lib/pour.lua
+  # settled), before the time limit.
+  result(settle_by settle_stopped_by)
+  if(NOT settle_by STREQUAL "fill_kinetic_energy")
+    message(FATAL_ERROR "the settling stopped by '${settle_by}' (expected fill_kinetic_energy)")
+  endif()
   # The stresses around the vane from the contact forces (lib/vane_stress.lua): as it starts, a
   # compressive overburden of the weight's scale (~540 Pa hydrostatic, less with the wall's share),
   # a lateral ratio between 0 and 1.5 and the vane relation's side share (H/D)/(H/D + 1/3) = 0.7826;
