@@ -41,18 +41,20 @@ if size_a ~= size_b then error(string.format("compare_seed_runs: %s mm against %
 
 local out = {a = P.a, b = P.b, d_mm = size_a, seeds_a = seeds_a, seeds_b = seeds_b, responses = {}}
 print(string.format("%-22s %-20s %-20s %-24s %s", "response", "a: mean ± sd (n)", "b: mean ± sd (n)", "b − a (Welch p)", "paired b − a"))
-for name in P.responses:gmatch("[^,%s]+") do
-  local va, vb, diff = {}, {}, {}
-  for _, s in ipairs(seeds_a) do
-    local x = ra[s][name]
-    if type(x) ~= "number" then error(string.format("compare_seed_runs: %s: no number in column %s (seed %s)", P.a, name, s)) end
-    va[#va + 1] = x
+-- One set's values of column `name`, in seed order.
+local function column(rows, seeds, path, name)
+  local out = {}
+  for _, s in ipairs(seeds) do
+    local x = rows[s][name]
+    if type(x) ~= "number" then error(string.format("compare_seed_runs: %s: no number in column %s (seed %s)", path, name, s)) end
+    out[#out + 1] = x
   end
-  for _, s in ipairs(seeds_b) do
-    local x = rb[s][name]
-    if type(x) ~= "number" then error(string.format("compare_seed_runs: %s: no number in column %s (seed %s)", P.b, name, s)) end
-    vb[#vb + 1] = x
-    if ra[s] then diff[#diff + 1] = x - ra[s][name] end
+  return out
+end
+for name in P.responses:gmatch("[^,%s]+") do
+  local va, vb, diff = column(ra, seeds_a, P.a, name), column(rb, seeds_b, P.b, name), {}
+  for k, s in ipairs(seeds_b) do
+    if ra[s] then diff[#diff + 1] = vb[k] - ra[s][name] end
   end
   local ma, sa, na = report.mean_std(va)
   local mb, sb, nb = report.mean_std(vb)

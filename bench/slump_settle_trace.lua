@@ -25,7 +25,7 @@ paddy.simulation = function(...)
     local t0, callback = s:time(), args.callback
     print("SETTLE t_s rms_all rms_kept n_above vz_above vmax_above zmax_above")
     args.callback = function(ss)
-      local xs, ys, zs = ss:xyz()
+      local zs = select(3, ss:xyz())
       local v, r = ss:velocities(), ss:radii()
       local n, vz, vmax, zmax = 0, 0, 0, -math.huge
       for i = 1, #zs do

@@ -66,7 +66,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "timestep_fraction", default = 0.1, min = 0.01, max = 0.5, description = "set by contact_conventions / material unless given (paddy 0.1, edem 0.2; paddy_calibrated: 0.0804 as calibrated); time step / Rayleigh time at the reference damping (the slump test is converged at 0.1, not at 0.2); shortened for restitutions below 0.13 (docs/physics.md)"},
   {name = "timestep_damping", default = true, description = "set by contact_conventions / material unless given; shorten the step for restitutions below 0.13 (false: timestep_fraction as given, e.g. one step for a whole calibration)"},
   {name = "settle_max_time", default = 1.0, unit = "s", min = 0, max = 20, description = "longest settling before the vane goes in (a poured fill needs at least its fall time plus min_rest_time)"},
-  {name = "settle_rest_of", default = "fill", choices = {"fill", "all"}, description = "the settling ends when these spheres are at rest: fill (those the strike-off keeps, once the pour has landed) or all (the excess too: the rule before 7 Dec 2026, to repeat earlier runs); lib/pour.lua settled"},
+  pour.rest_of_parameter(),
   {name = "rest_speed", default = 0.005, unit = "m/s", min = 1e-6, max = 1, description = "settled: RMS speed sqrt(2 KE / M) of the spheres below the strike-off level below this, once the pour has landed (lib/pour.lua settled)"},
   {name = "min_rest_time", default = 0.15, unit = "s", min = 0, max = 10, description = "shortest settling"},
   {name = "insert_time", default = 0.05, unit = "s", min = 0, max = 5, description = "settling after the vane is inserted"},

@@ -53,7 +53,7 @@ local P = mud.resolve(paddy.parameters(mud.parameters{
   {name = "lift_rolling_integration", default = "same", choices = {"same", "implicit", "explicit"},
    description = "integration of the type A rolling torque from the strike-off on (same: as during the fill; implicit or explicit: switch the contact laws before the lift): separates the torque's effect on the fill from its effect on the collapse"},
   {name = "settle_max_time", default = 2.0, unit = "s", min = 0, max = 20, description = "longest settling inside the cone (a poured fill needs at least its fall time plus min_rest_time)"},
-  {name = "settle_rest_of", default = "fill", choices = {"fill", "all"}, description = "the settling ends when these spheres are at rest: fill (those the strike-off keeps, once the pour has landed) or all (the excess too: the rule before 7 Dec 2026, to repeat earlier runs); lib/pour.lua settled"},
+  pour.rest_of_parameter(),
   {name = "rest_speed", default = 0.01, unit = "m/s", min = 1e-6, max = 1, description = "at rest: RMS speed sqrt(2 KE / M) below this ..."},
   {name = "rest_window", default = 0.5, unit = "s", min = 0.01, max = 10, description = "... or the slump changed by less than slump_tolerance over this window"},
   {name = "slump_tolerance", default = 0.001, unit = "m", min = 0, max = 0.1, description = "see rest_window (0: KE criterion only)"},

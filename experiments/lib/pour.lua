@@ -81,11 +81,18 @@ end
 -- triggers, any of which may stand in for the fill at rest (slump.lua: the top steady).
 -- rest_of = "all": every sphere at rest, the excess included, after min_rest_time only (the rule
 -- before 7 Dec 2026, kept to repeat earlier runs); default "fill".
-M.rest_of_choices = {"fill", "all"}
+local REST_OF = {"fill", "all"}
+
+-- The scripts' parameter for rest_of (slump.lua, rheometer.lua, tack.lua declare it alike).
+function M.rest_of_parameter()
+  return {name = "settle_rest_of", default = REST_OF[1], choices = {table.unpack(REST_OF)},
+          description = "the settling ends when these spheres are at rest: fill (those the strike-off keeps, once the pour has landed) or all (the excess too: the rule before 7 Dec 2026, to repeat earlier runs); lib/pour.lua settled"}
+end
+
 function M.settled(fill, level, min_rest_time, rest_speed, extra, rest_of)
   local all = rest_of == "all"
   if rest_of ~= nil and not all and rest_of ~= "fill" then
-    error(string.format("lib/pour.lua: settle_rest_of = %s; allowed: fill, all", tostring(rest_of)), 2)
+    error(string.format("lib/pour.lua: settle_rest_of = %s; allowed: %s", tostring(rest_of), table.concat(REST_OF, ", ")), 2)
   end
   local rest = {all and trigger.at_rest(rest_speed) or trigger.at_rest(rest_speed, level)}
   for _, t in ipairs(extra or {}) do rest[#rest + 1] = t end
