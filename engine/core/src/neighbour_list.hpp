@@ -17,16 +17,18 @@
 namespace paddy {
 
 // Uniform grid of cells over the particles' bounding box; the particles of each cell are
-// contiguous in `order`.
+// contiguous in `order`, and the cells of a row along x are contiguous in the cell order. The
+// cells are `size` wide along y and z and size / x_split along x (x_split = 1: cubes).
 struct CellGrid {
   Vec3 origin = Vec3::Zero();
-  double size = 0.0;
+  double size = 0.0;    // along y and z
+  double size_x = 0.0;  // along x: size / x_split
   int nx = 1, ny = 1, nz = 1;
   std::vector<std::size_t> cell_start;  // size nx*ny*nz + 1
   std::vector<std::uint32_t> order;     // particle indices grouped by cell
   std::vector<std::uint32_t> cell_of;   // cell of each particle
 
-  void build(const std::vector<Vec3>& x, double cell_size);
+  void build(const std::vector<Vec3>& x, double cell_size, int x_split = 1);
   int cellIndex(int ix, int iy, int iz) const { return (iz * ny + iy) * nx + ix; }
 };
 
