@@ -387,41 +387,54 @@ plot '%s' using 1:2:3 with yerrorbars pt 7 ps 1.5 title 'ratio', 1 lc rgb 'black
   end
 end
 
-print(string.format("%-10s %8s  %18s  %18s  %14s", "set", "value", "vane [Pa]", "slump [Pa]", "ratio"))
+-- "v +- e" for the console, with the spread shown as n/a where it is undefined: a mean of one
+-- seed, or a fit through as many points as it has parameters (no standard error).
+local function pm(v, e, digits)
+  local f = "%." .. digits .. "f"
+  if v == nil or v ~= v then return "-" end
+  if e == nil or e ~= e then return string.format(f .. " +- n/a", v) end
+  return string.format(f .. " +- " .. f, v, e)
+end
+-- A {mean, std, values} over seeds.
+local function pm_seeds(stat, digits)
+  if not stat then return "-" end
+  return pm(stat.mean, stat.values and #stat.values > 1 and stat.std or nil, digits)
+end
+local function num(v, digits) return (v == nil or v ~= v) and "-" or string.format("%." .. digits .. "f", v) end
+
+print(string.format("%-10s %8s  %18s  %18s  %16s", "set", "value", "vane [Pa]", "slump [Pa]", "ratio"))
 for _, s in ipairs(summary) do
   if s.within_target == nil then
-    print(string.format("%-10s %8g  %18s  %9.1f +- %-6.1f  no vane at reference_fill_level = %g m: see the depth series",
-                        s.set, s.value, "-", s.slump_yield_stress_Pa.mean or 0 / 0, s.slump_yield_stress_Pa.std or 0 / 0,
-                        P.reference_fill_level))
+    print(string.format("%-10s %8g  %18s  %18s  no vane at reference_fill_level = %g m: see the depth series",
+                        s.set, s.value, "-", pm_seeds(s.slump_yield_stress_Pa, 1), P.reference_fill_level))
   else
-    print(string.format("%-10s %8g  %9.1f +- %-6.1f  %9.1f +- %-6.1f  %6.3f +- %-5.3f %s", s.set, s.value, s.vane_yield_stress_Pa.mean,
-                        s.vane_yield_stress_Pa.std, s.slump_yield_stress_Pa.mean, s.slump_yield_stress_Pa.std, s.ratio.mean,
-                        s.ratio.std, s.within_target and "within target" or "NOT within target"))
+    print(string.format("%-10s %8g  %18s  %18s  %16s %s", s.set, s.value, pm_seeds(s.vane_yield_stress_Pa, 1),
+                        pm_seeds(s.slump_yield_stress_Pa, 1), pm_seeds(s.ratio, 3),
+                        s.within_target and "within target" or "NOT within target"))
   end
 end
 if depth then
   print(string.format("vane depth series at fill levels %s m: tau_peak = c + sigma_v tan(phi) (pooled over seeds; per seed mean +- std)",
                       P.vane_fill_levels))
-  print(string.format("%-10s %8s  %16s  %14s  %16s  %16s  %16s", "set", "value", "c [Pa]", "tan phi", "c/slump", "c/slump seeds",
+  print(string.format("%-10s %8s  %16s  %14s  %10s  %16s  %16s", "set", "value", "c [Pa]", "tan phi", "c/slump", "c/slump seeds",
                       "shallow/slump"))
   for _, ds in ipairs(depth.sets) do
     local p = ds.pooled or {}
-    print(string.format("%-10s %8g  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16.3f  %7.3f +- %-6.3f  %7.3f +- %-6.3f", ds.set, ds.value,
-                        p.c or 0 / 0, p.se_c or 0 / 0, p.tan_phi or 0 / 0, p.se_tan_phi or 0 / 0, ds.pooled_c_over_slump or 0 / 0,
-                        ds.c_over_slump.mean or 0 / 0, ds.c_over_slump.std or 0 / 0, ds.shallow_over_slump.mean or 0 / 0,
-                        ds.shallow_over_slump.std or 0 / 0))
+    print(string.format("%-10s %8g  %16s  %14s  %10s  %16s  %16s", ds.set, ds.value, pm(p.c, p.se_c, 1),
+                        pm(p.tan_phi, p.se_tan_phi, 3), num(ds.pooled_c_over_slump, 3), pm_seeds(ds.c_over_slump, 3),
+                        pm_seeds(ds.shallow_over_slump, 3)))
     local j = ds.janssen
     if j and j.pooled then
-      print(string.format("%-10s %8s  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16s  %7.3f +- %-6.3f  (Janssen K = %g, mu_w = %g)", "", "",
-                          j.pooled.c, j.pooled.se_c or 0 / 0, j.pooled.tan_phi, j.pooled.se_tan_phi or 0 / 0, "",
-                          j.c_over_slump.mean or 0 / 0, j.c_over_slump.std or 0 / 0, j.lateral_ratio, j.wall_friction))
+      print(string.format("%-10s %8s  %16s  %14s  %10s  %16s  (Janssen K = %g, mu_w = %g)", "", "", pm(j.pooled.c, j.pooled.se_c, 1),
+                          pm(j.pooled.tan_phi, j.pooled.se_tan_phi, 3), "", pm_seeds(j.c_over_slump, 3), j.lateral_ratio,
+                          j.wall_friction))
     end
     for _, m in ipairs(AT_PEAK) do
       local e = ds[m.name]
       if e and e.pooled then
-        print(string.format("%-10s %8s  %7.1f +- %-6.1f  %5.3f +- %-5.3f  %16.3f  %7.3f +- %-6.3f  (%s)", "", "", e.pooled.c, e.pooled.se_c or 0 / 0,
-                            e.pooled.tan_phi, e.pooled.se_tan_phi or 0 / 0, e.pooled_c_over_slump or 0 / 0, e.c_over_slump.mean or 0 / 0,
-                            e.c_over_slump.std or 0 / 0, m.what))
+        print(string.format("%-10s %8s  %16s  %14s  %10s  %16s  (%s)", "", "", pm(e.pooled.c, e.pooled.se_c, 1),
+                            pm(e.pooled.tan_phi, e.pooled.se_tan_phi, 3), num(e.pooled_c_over_slump, 3),
+                            pm_seeds(e.c_over_slump, 3), m.what))
       end
     end
   end
