@@ -185,7 +185,7 @@ local fill_fields = {
   fill_stress = fill_stress,          -- around the vane as it starts (lib/vane_stress.lua)
   hopper_height_m = poured and poured.hopper_height or nil,
   fill_structure = structure,
-  settle_time_s = settle_time, settle_stopped_by = settle.stopped_by or "settle_max_time", time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
+  settle_time_s = settle_time, settle_stopped_by = settle.stopped_by, time_step = dt, time_step_fraction = dt_fraction, time_step_damping_factor = dt_damping_factor,
   material = P.material_info,  -- conventions and material set used, with their source (lib/mud.lua)
   coarse_graining = {alpha = cg.alpha, reference_diameter = mud.reference_diameter, particle_diameter = d,
                      scaled_params = cg.params, changed = cg.changed, rows = cg.rows},

@@ -170,18 +170,14 @@ if cone then
     {"t", function(s) return s:time() - t_settle end},
     {"top", function() return top_under_cone() end},
   }
-  local settle = phase.run(sim, {
-    duration = P.settle_max_time, every = P.history_interval, snapshot_every = snapshot_every, progress = P.progress,
-    sample = tops,
-    stop = pour.settled(poured, H, P.min_rest_time, P.rest_speed, {trigger.steady(tops, "top", P.rest_window, P.slump_tolerance)},
-                        P.settle_rest_of),
+  local settle
+  settle, struck = pour.settle_and_strike(sim, {
+    who = "slump", poured = poured, level = H, settle_max_time = P.settle_max_time, min_rest_time = P.min_rest_time,
+    rest_speed = P.rest_speed, rest_of = P.settle_rest_of, every = P.history_interval, sample = tops,
+    also = {trigger.steady(tops, "top", P.rest_window, P.slump_tolerance)}, snapshot_every = snapshot_every,
+    progress = P.progress,
   })
-  settle_time, settle_stop = settle.duration, settle.stopped_by or "settle_max_time"
-  struck = sim:remove_if(function(i, x, y, z, r) return z + r > H end)
-  if poured then
-    pour.check_full("slump", struck, H)
-    pour.remove_hopper(sim, poured)
-  end
+  settle_time, settle_stop = settle.duration, settle.stopped_by
 end
 if P.lift_rolling_integration ~= "same" then
   P.rolling_integration = P.lift_rolling_integration

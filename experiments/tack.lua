@@ -332,7 +332,7 @@ paddy.result{
   cup_diameter = P.cup_diameter, cup_depth = P.cup_depth, mud_density = P.mud_density,
   particles = particles, filled = poured.filled, struck_off = struck,
   fill_solid_fraction = fill_solid, hopper_height_m = poured.hopper_height, fill_structure = structure,
-  settle_time_s = settle.duration, settle_stopped_by = settle.stopped_by or "settle_max_time", time_step = dt, time_step_fraction = dt_fraction,
+  settle_time_s = settle.duration, settle_stopped_by = settle.stopped_by, time_step = dt, time_step_fraction = dt_fraction,
   time_step_damping_factor = dt_damping_factor,
   simulated_time_s = sim:time(),
   wall_time_s = os.difftime(os.time(), wall_start),

@@ -131,10 +131,15 @@ end
 -- standing above the level, and for a poured fill (`poured`, from M.fill) checks that it was full
 -- (M.check_full) and sends its hopper away. o: who (the script's name), poured (nil for a fill
 -- placed without a hopper), level, settle_max_time, min_rest_time, rest_speed, rest_of (M.settled),
--- snapshot_every, progress. → the settling phase (phase.run's result), spheres struck off
+-- snapshot_every, progress; optional: every (the sampling interval, default 0.02 s), sample (lib/
+-- sampler.lua samplers recorded at each sample), also (more stop triggers, M.settled's `extra`).
+-- → the settling phase (phase.run's result, stopped_by = the trigger's name or "settle_max_time"),
+-- spheres struck off
 function M.settle_and_strike(sim, o)
-  local settle = phase.run(sim, {duration = o.settle_max_time, every = 0.02, snapshot_every = o.snapshot_every, progress = o.progress,
-                                 stop = M.settled(o.poured, o.level, o.min_rest_time, o.rest_speed, nil, o.rest_of)})
+  local settle = phase.run(sim, {duration = o.settle_max_time, every = o.every or 0.02, snapshot_every = o.snapshot_every,
+                                 progress = o.progress, sample = o.sample,
+                                 stop = M.settled(o.poured, o.level, o.min_rest_time, o.rest_speed, o.also, o.rest_of)})
+  settle.stopped_by = settle.stopped_by or "settle_max_time"
   local struck = sim:remove_if(function(i, x, y, z, r) return z + r > o.level end)
   if o.poured then
     M.check_full(o.who, struck, o.level)
