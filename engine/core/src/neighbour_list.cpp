@@ -52,10 +52,13 @@ void CellGrid::build(const std::vector<Vec3>& x, double cell_size, int x_split) 
     cell_of[i] = static_cast<std::uint32_t>(cellIndex(ix, iy, iz));
     ++cell_start[cell_of[i] + 1];
   }
+  // Counting sort in place: the prefix sums make cell_start[c] cell c's first slot; placing the
+  // particles advances it to cell c + 1's first slot, and a shift by one cell restores it.
   for (std::size_t c = 0; c < ncell; ++c) cell_start[c + 1] += cell_start[c];
   order.resize(n);
-  std::vector<std::size_t> fill(cell_start.begin(), cell_start.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) order[fill[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t i = 0; i < n; ++i) order[cell_start[cell_of[i]]++] = static_cast<std::uint32_t>(i);
+  for (std::size_t c = ncell - 1; c > 0; --c) cell_start[c] = cell_start[c - 1];
+  cell_start[0] = 0;
 }
 
 void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t>& prev_index, double skin,
@@ -114,7 +117,7 @@ void NeighbourList::build(const ParticleArrays& p, const std::vector<std::size_t
     const std::uint64_t* const Id = p.id.data();
     const int* const Mat = p.material.data();
     const std::uint32_t* const Order = grid.order.data();
-    const std::size_t* const CellStart = grid.cell_start.data();
+    const std::uint32_t* const CellStart = grid.cell_start.data();
     const std::uint32_t* const CellOf = grid.cell_of.data();
     const int nx = grid.nx, ny = grid.ny, nz = grid.nz;
     const double size_yz = grid.size, inv_x = 1.0 / grid.size_x;

@@ -24,7 +24,7 @@ struct CellGrid {
   double size = 0.0;    // along y and z
   double size_x = 0.0;  // along x: size / x_split
   int nx = 1, ny = 1, nz = 1;
-  std::vector<std::size_t> cell_start;  // size nx*ny*nz + 1
+  std::vector<std::uint32_t> cell_start;  // size nx*ny*nz + 1 (particle counts fit: indices are 32-bit)
   std::vector<std::uint32_t> order;     // particle indices grouped by cell
   std::vector<std::uint32_t> cell_of;   // cell of each particle
 
