@@ -62,6 +62,16 @@ set xrange [0:*]; set yrange [0:*]
 plot %s]], title, xlabel, ylabel, table.concat(plots, ", \\\n     ")))
 end
 
+-- "v +- e" with `digits` decimals, for a console table: "-" for a missing value (nil or NaN); where
+-- the spread is undefined (nil or NaN: one seed, a fit through as many points as it has
+-- parameters) the value alone, followed by `no_spread` if given (e.g. " +- n/a").
+function M.plus_minus(v, e, digits, no_spread)
+  local f = "%." .. digits .. "f"
+  if v == nil or v ~= v then return "-" end
+  if e == nil or e ~= e then return string.format(f, v) .. (no_spread or "") end
+  return string.format(f .. " +- " .. f, v, e)
+end
+
 -- Mean and sample standard deviation (n − 1) of a list; the std is 0 for one value.
 function M.mean_std(values)
   local n = #values

@@ -387,15 +387,9 @@ plot '%s' using 1:2:3 with yerrorbars pt 7 ps 1.5 title 'ratio', 1 lc rgb 'black
   end
 end
 
--- "v +- e" for the console, with the spread shown as n/a where it is undefined: a mean of one
--- seed, or a fit through as many points as it has parameters (no standard error).
-local function pm(v, e, digits)
-  local f = "%." .. digits .. "f"
-  if v == nil or v ~= v then return "-" end
-  if e == nil or e ~= e then return string.format(f .. " +- n/a", v) end
-  return string.format(f .. " +- " .. f, v, e)
-end
--- A {mean, std, values} over seeds.
+-- "v +- e" for the console, the spread shown as n/a where it is undefined (report.plus_minus).
+local function pm(v, e, digits) return report.plus_minus(v, e, digits, " +- n/a") end
+-- A {mean, std, values} over seeds: its std is undefined for one seed.
 local function pm_seeds(stat, digits)
   if not stat then return "-" end
   return pm(stat.mean, stat.values and #stat.values > 1 and stat.std or nil, digits)

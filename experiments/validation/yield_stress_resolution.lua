@@ -195,7 +195,7 @@ plot '%s' using ($1 == 1 ? $2 : 1/0):3 with points pt 7 ps 1.3 lc rgb '#d95f02' 
 end
 
 -- Console.
-local function pm(v, se) return se and string.format("%.1f +- %.1f", v, se) or string.format("%.1f", v) end
+local function pm(v, se) return report.plus_minus(v, se, 1) end
 print(string.format("%-6s %10s %6s %14s", "test", "d [mm]", "runs", "tau [Pa]"))
 for _, t in ipairs({{"vane", vane_d}, {"slump", slump_d}}) do
   for _, e in ipairs(t[2]) do
