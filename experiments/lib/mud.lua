@@ -33,10 +33,10 @@ table.sort(M.material_names)
 -- default_material: the material set `material = auto` picks.
 M.conventions = {
   paddy = {rolling = "constant_torque", jkr_overlap_stiffness = 0, timestep_fraction = 0.1, timestep_damping = true,
-           default_material = "paddy_calibrated",
+           integration = "velocity_verlet", default_material = "paddy_calibrated",
            description = "Paddy: implicit type A rolling torque, JKR stiffness from the contact radius, 0.1 T_R"},
   edem = {rolling = "constant_torque_explicit", jkr_overlap_stiffness = 1, timestep_fraction = 0.2, timestep_damping = true,
-          default_material = "reference_edem",
+          integration = "velocity_verlet", default_material = "reference_edem",
           description = "EDEM: explicit type A rolling torque, JKR damping/tangential stiffness from sqrt(R* delta), 0.2 T_R (EDEM's recommended step)"},
 }
 M.convention_names = {"paddy", "edem"}
@@ -85,6 +85,8 @@ M.selection = {
    description = "contact conventions: paddy (Paddy's converged physics) or edem (EDEM as documented: explicit type A rolling torque, JKR stiffness from the overlap, 0.2 T_R); docs/physics.md \"EDEM conventions\""},
   {name = "rolling_integration", default = "conventions", choices = {"conventions", "implicit", "explicit"},
    description = "integration of the type A rolling torque: conventions (paddy implicit, edem explicit), implicit (constant_torque: a rotation stops instead of reversing) or explicit (constant_torque_explicit: the torque from the step's angular velocity); docs/physics.md §2.5, §6"},
+  {name = "time_integration", default = "conventions", choices = {"conventions", "velocity_verlet", "euler"},
+   description = "time integration scheme: conventions (both: velocity_verlet), velocity_verlet (second order) or euler (semi-implicit Euler, first order: EDEM's default scheme); docs/physics.md §3, §6"},
   {name = "material", default = "auto", choices = M.material_names,
    description = "named contact-parameter set (experiments/materials/paddy_mud.json); auto: paddy_calibrated under paddy conventions, reference_edem under edem"},
 }
@@ -230,6 +232,19 @@ function M.rolling_model(P, conv)
   return model
 end
 
+-- The time integration scheme (sim:integration): the conventions' one unless time_integration
+-- overrides it.
+M.integration_schemes = {velocity_verlet = true, euler = true}
+function M.integration(P, conv)
+  conv = conv or M.conventions[rawget(P, "contact_conventions") or M.default_conventions]
+  local how = rawget(P, "time_integration")
+  if how == nil or how == "conventions" then return conv.integration end
+  if not M.integration_schemes[how] then
+    error(string.format("time_integration = '%s': choose conventions, velocity_verlet or euler", tostring(how)), 0)
+  end
+  return how
+end
+
 function M.pair_specs(P, c, effects)
   local conv = M.conventions[P.contact_conventions or M.default_conventions]
   local rolling = M.rolling_model(P, conv)
@@ -270,6 +285,7 @@ function M.setup(sim, P, c, effects)
   local steel = sim:material{name = "steel", density = P.steel_density, shear_modulus = P.steel_shear_modulus,
                              poisson = P.steel_poisson}
   M.set_interactions(sim, P, c, mud, steel, effects)
+  sim:integration(M.integration(P))
   return mud, steel
 end
 
@@ -332,7 +348,7 @@ function M.resolve(P, given)
                         table.concat(M.material_names, ", ")), 0)
   end
   local info = {name = name, conventions = conv_name, conventions_description = conv.description,
-                rolling = M.rolling_model(V, conv),
+                rolling = M.rolling_model(V, conv), integration = M.integration(V, conv),
                 source = set.source, calibrated_with = set.calibrated_with, file = M.materials_file, given = {}}
   for _, e in ipairs(M.contact) do
     if given[e.name] ~= nil then
@@ -366,6 +382,7 @@ function M.describe(P)
   local conv = M.conventions[i.conventions]
   local rolling = i.rolling ~= conv.rolling and string.format(" (rolling %s)", i.rolling) or ""
   if i.lift_rolling and i.lift_rolling ~= i.rolling then rolling = rolling .. string.format(" (from the lift on: rolling %s)", i.lift_rolling) end
+  if i.integration and i.integration ~= conv.integration then rolling = rolling .. string.format(" (integration %s)", i.integration) end
   return string.format("conventions %s%s; material %s (%s): e %.3g/%.3g, mu %.3g/%.3g, mu_r %.3g/%.3g (mud-mud/mud-steel), gamma %.3g J/m^2 at 2 mm%s\n            step %.3g T_R%s from %s",
     i.conventions, rolling, i.name, (i.source:match("^[^(,;]+"):gsub("%s+$", "")), v.mud_mud_restitution, v.mud_steel_restitution,
     v.mud_mud_friction, v.mud_steel_friction, v.mud_mud_rolling_friction, v.mud_steel_rolling_friction,

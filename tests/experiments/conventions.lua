@@ -72,7 +72,8 @@ check(not pcall(function() return mud.resolve(declared(), {}).mud_mud_fricton en
 local function laws(conventions)
   local rec = {}
   local sim = {material = function(_, m) return m.name end,
-               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end}
+               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end,
+               integration = function(_, scheme) rec.integration = scheme end}
   local P = mud.resolve(declared{contact_conventions = conventions}, {})
   mud.setup(sim, P, P)
   return rec
@@ -89,7 +90,8 @@ check(e["mud-mud"].surface_energy == reference.jkr_surface_energy, "edem gamma %
 local function laws_with(conventions, integration)
   local rec = {}
   local sim = {material = function(_, m) return m.name end,
-               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end}
+               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end,
+               integration = function(_, scheme) rec.integration = scheme end}
   local P = mud.resolve(declared{contact_conventions = conventions, rolling_integration = integration}, {})
   mud.setup(sim, P, P)
   return rec, P, sim
@@ -109,6 +111,23 @@ mud.set_interactions(sim_i, Pi, Pi, "mud", "steel")
 check(ei["mud-mud"].rolling == "constant_torque_explicit" and ei["mud-steel"].rolling == "constant_torque_explicit", "switched during the run")
 ok, msg = pcall(mud.pair_specs, {contact_conventions = "paddy", rolling_integration = "halfway"}, Pi)
 check(not ok and msg:find("rolling_integration = 'halfway'", 1, true), "bad rolling_integration: %s", tostring(msg))
+
+-- time_integration: the conventions' scheme (velocity Verlet in both) unless given; setup hands it
+-- to sim:integration, the run's record and printed line name an override.
+check(ei.integration == "velocity_verlet" and pc.integration == "velocity_verlet", "conventions' scheme: %s, %s",
+      tostring(ei.integration), tostring(pc.integration))
+do
+  local rec = {}
+  local sim = {material = function(_, m) return m.name end, interaction = function() end,
+               integration = function(_, scheme) rec.integration = scheme end}
+  local P = mud.resolve(declared{contact_conventions = "edem", time_integration = "euler"}, {})
+  mud.setup(sim, P, P)
+  check(rec.integration == "euler" and P.material_info.integration == "euler", "edem + euler: %s", tostring(rec.integration))
+  check(mud.describe(P):find("(integration euler)", 1, true), "the override is printed: %s", mud.describe(P))
+  check(not mud.describe(mud.resolve(declared(), {})):find("(integration", 1, true), "no override printed by default")
+  ok, msg = pcall(mud.resolve, declared{time_integration = "rk4"}, {})
+  check(not ok and msg:find("time_integration = 'rk4'", 1, true), "bad time_integration: %s", tostring(msg))
+end
 
 -- The calibration input's conventions key: default paddy, edem accepted, anything else refused.
 local t = paddy.read_json((mud.materials_file:gsub("materials/paddy_mud%.json$", "calibration/paddy_mud.json")))

@@ -60,7 +60,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   wall_force.assign(n_wall, Vec3::Zero());
   // Velocities the contact laws see: at a step, predicted to the end of the step (see
   // predictVelocities); otherwise the current ones.
-  const bool predicted = pass == ForcePass::Step && predict_velocities;
+  const bool predicted = pass == ForcePass::Step && predictsVelocities();
   if (predicted) {
     v_eval.resize(n);
     w_eval.resize(n);

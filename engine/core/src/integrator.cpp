@@ -1,9 +1,18 @@
-// Time loop: velocity Verlet for translation and rotation (spheres), with the neighbour list
-// rebuilt when two particles may have closed by more than the skin since its build, and stability
-// guards.
+// Time loop: velocity Verlet (or semi-implicit Euler) for translation and rotation (spheres), with
+// the neighbour list rebuilt when two particles may have closed by more than the skin since its
+// build, and stability guards.
 //
+// Velocity Verlet (TimeIntegration::VelocityVerlet, the default; second order):
 //   v(t+dt/2) = v(t) + dt/2 · F(t)/m,   x(t+dt) = x(t) + dt · v(t+dt/2),
-//   F(t+dt) from x(t+dt), v(t+dt/2),    v(t+dt) = v(t+dt/2) + dt/2 · F(t+dt)/m   (same for ω, T/I).
+//   F(t+dt) from x(t+dt) and the velocities predicted to t+dt (predictVelocities),
+//   v(t+dt) = v(t+dt/2) + dt/2 · F(t+dt)/m   (same for ω, T/I).
+// Semi-implicit (symplectic) Euler (TimeIntegration::SymplecticEuler; first order, e.g. Hairer,
+// Lubich & Wanner, Geometric Numerical Integration, 2006, §I.1.2):
+//   v(t+dt) = v(t) + dt · F(t)/m,   x(t+dt) = x(t) + dt · v(t+dt),
+//   F(t+dt) from x(t+dt), v(t+dt)   (same for ω, T/I; the resisting torque with h = dt).
+// Under gravity alone it puts a body at x0 + v0 t − g dt² n(n+1)/2 after n steps (Verlet: the
+// exact x0 + v0 t − g t²/2); it is stable for an undamped spring up to ω dt = 2, as Verlet, where
+// the forward Euler scheme (positions from the old velocities) gains energy at every step.
 //
 // Resisting torques (ContactBatch::resist_i, summed per body into R = resisting_torque) are the
 // set-valued law T_r = −R ω/|ω| (|T_r| ≤ R at rest). Each rotational half-kick applies it by
@@ -220,6 +229,8 @@ void Simulation::step(std::uint64_t n) {
   }
   const double dt = dt_;
   const double half = 0.5 * dt;
+  const bool euler = m.integration == TimeIntegration::SymplecticEuler;
+  const double kick = euler ? dt : half;  // the kick before the drift: all of Euler's, half of Verlet's
   const std::size_t np = p_.size();
   // One parallel loop per step moves the particles: the closing half-kick of the previous step
   // (deferred to here: nothing reads the velocities in between), the opening half-kick, the drift,
@@ -240,13 +251,13 @@ void Simulation::step(std::uint64_t n) {
 #pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m2, r2, hi_x, hi_y, hi_z) \
     reduction(min : lo_x, lo_y, lo_z) reduction(|| : bad)
     for (std::size_t i = 0; i < np; ++i) {
-      const double h_over_m = half / p_.mass[i], h_over_i = half / p_.inertia[i];
-      if (closing) {
-        p_.velocity[i] += h_over_m * p_.force[i];
-        p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], h_over_i);
+      const double k_over_m = kick / p_.mass[i], k_over_i = kick / p_.inertia[i];
+      if (closing) {  // Verlet only: kick = dt/2
+        p_.velocity[i] += k_over_m * p_.force[i];
+        p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], k_over_i);
       }
-      p_.velocity[i] += h_over_m * p_.force[i];
-      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], h_over_i);
+      p_.velocity[i] += k_over_m * p_.force[i];
+      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], k_over_i);
       p_.position[i] += dt * p_.velocity[i];
       if (x_build) {
         const Vec3 dx = p_.position[i] - x_build[i];
@@ -298,7 +309,7 @@ void Simulation::step(std::uint64_t n) {
           << dt / rayleighTime() << " x Rayleigh time) is too large for these velocities; reduce it";
       throw InstabilityError(msg.str());
     }
-    closing_kick_due = true;
+    closing_kick_due = !euler;
   }
   if (closing_kick_due) {
 #pragma omp parallel for schedule(static) num_threads(threads_)

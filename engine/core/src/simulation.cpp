@@ -192,6 +192,13 @@ void Simulation::setTimeStepFraction(double f) {
   if (p_.size() > 0) dt_ = f * rayleighTime();
 }
 
+const char* timeIntegrationName(TimeIntegration scheme) {
+  return scheme == TimeIntegration::SymplecticEuler ? "euler" : "velocity_verlet";
+}
+
+void Simulation::setTimeIntegration(TimeIntegration scheme) { impl_->integration = scheme; }
+TimeIntegration Simulation::timeIntegration() const { return impl_->integration; }
+
 double Simulation::kineticEnergy() const {
   double e = 0.0;
   for (std::size_t i = 0; i < p_.size(); ++i)

@@ -119,7 +119,9 @@ struct Simulation::Impl {
   // kicks it repeats) is a worksharing loop over all particles: computeForces calls it inside its
   // parallel region (an orphaned `omp for`; outside a parallel region one thread does all).
   std::vector<Vec3> v_eval, w_eval;
-  bool predict_velocities = true;
+  TimeIntegration integration = TimeIntegration::VelocityVerlet;
+  // Only velocity Verlet predicts (the Euler scheme's forces see the velocities of the step).
+  bool predictsVelocities() const { return integration == TimeIntegration::VelocityVerlet; }
   void predictVelocities(const Simulation& s);
 
   std::vector<ContactRecord> last_records;

@@ -185,6 +185,19 @@ int timestep(lua_State* L) {
   return 1;
 }
 
+// sim:integration("velocity_verlet" | "euler") | sim:integration() → the scheme's name
+int integration(lua_State* L) {
+  SimHandle& h = checkSim(L, 1);
+  if (!lua_isnoneornil(L, 2)) {
+    const std::string name = luaL_checkstring(L, 2);
+    if (name == "velocity_verlet") h.sim->setTimeIntegration(TimeIntegration::VelocityVerlet);
+    else if (name == "euler") h.sim->setTimeIntegration(TimeIntegration::SymplecticEuler);
+    else throw InputError("sim:integration: '" + name + "' is not a scheme; choose velocity_verlet or euler");
+  }
+  lua_pushstring(L, timeIntegrationName(h.sim->timeIntegration()));
+  return 1;
+}
+
 int rayleighTime(lua_State* L) {
   lua_pushnumber(L, checkSim(L, 1).sim->rayleighTime());
   return 1;
@@ -220,6 +233,7 @@ const SimulationMethod reg_methods[] = {
     {"interaction", &guarded<interaction>},
     {"add_particle", &guarded<addParticle>},
     {"timestep", &guarded<timestep>},
+    {"integration", &guarded<integration>},
     {"rayleigh_time", &guarded<rayleighTime>},
     {"time", &guarded<time>},
     {"steps", &guarded<steps>},

@@ -81,6 +81,20 @@ elseif(CASE STREQUAL "binding_error_line")
   expect_match("${se}" "bad_material\\.lua:3:")
   expect_no_result(${WORK}/out)
 
+elseif(CASE STREQUAL "integration_scheme")
+  # sim:integration selects the scheme and returns its name; a name it does not know is refused
+  # at the calling line, with the choices.
+  file(WRITE ${WORK}/scheme.lua
+       "local sim = paddy.simulation{}\nassert(sim:integration() == 'velocity_verlet')\nassert(sim:integration('euler') == 'euler')\nassert(sim:integration() == 'euler')\nassert(sim:integration('velocity_verlet') == 'velocity_verlet')\n")
+  run_paddy(code se run scheme.lua --out out_ok)
+  expect_code(${code} 0)
+  file(WRITE ${WORK}/bad_scheme.lua "local sim = paddy.simulation{}\n\nsim:integration('leapfrog')\n")
+  run_paddy(code se run bad_scheme.lua --out out_bad)
+  expect_code(${code} 2)
+  expect_match("${se}" "bad_scheme\\.lua:3:")
+  expect_match("${se}" "'leapfrog' is not a scheme; choose velocity_verlet or euler")
+  expect_no_result(${WORK}/out_bad)
+
 elseif(CASE STREQUAL "unknown_option")
   file(WRITE ${WORK}/typo.lua "local sim = paddy.simulation{gravty = {0, 0, -9.81}}\n")
   run_paddy(code se run typo.lua --out out)

@@ -1,4 +1,5 @@
-// Simulation: owns particles, walls, contact laws and the time loop (velocity Verlet).
+// Simulation: owns particles, walls, contact laws and the time loop (velocity Verlet, or the
+// semi-implicit Euler scheme on request: TimeIntegration).
 //
 // Particles are stored as structure-of-arrays (one array per field). The neighbour search is a
 // cell list feeding a half Verlet list with a skin; per-contact history lives beside the list and
@@ -61,6 +62,16 @@ struct TimeStepPolicy {
   static constexpr double kDefaultRayleighFraction = 0.2;
 };
 
+// The time integration scheme (integrator.cpp gives the formulas).
+//   VelocityVerlet:      second order; half-kick, drift, forces at the new positions with the
+//                        velocities predicted to the end of the step, half-kick (the default).
+//   SymplecticEuler:     first order (semi-implicit Euler): v(t+dt) = v(t) + dt F(t)/m, then
+//                        x(t+dt) = x(t) + dt v(t+dt); forces with the velocities of the step, no
+//                        prediction. EDEM's default scheme is a first-order "Euler"
+//                        (docs/physics.md §6).
+enum class TimeIntegration { VelocityVerlet, SymplecticEuler };
+const char* timeIntegrationName(TimeIntegration scheme);  // "velocity_verlet", "euler"
+
 class Simulation {
  public:
   explicit Simulation(std::shared_ptr<const PluginManager> plugins);
@@ -100,6 +111,9 @@ class Simulation {
   void setTimeStep(double dt);
   void setTimeStepFraction(double fraction_of_rayleigh);
   double timeStep() const { return dt_; }
+  // May change between calls of step(): each leaves positions, velocities and forces consistent.
+  void setTimeIntegration(TimeIntegration scheme);
+  TimeIntegration timeIntegration() const;
 
   // ---- running --------------------------------------------------------------------------------
   void step(std::uint64_t n = 1);
