@@ -6,7 +6,8 @@
 -- (their spread is written beside it). docs/physics.md §3 "Measured restitution".
 --
 --   paddy run experiments/examples/restitution_step.lua --out results/restitution_step
--- writes restitution_step.csv (scheme, e, step / T_R, mean, min, max, relative error).
+-- writes restitution_step.csv (scheme, e, step / T_R, mean, min, max, relative error) and
+-- restitution_step.png (the error against the step, log-log; `pictures = false` skips it).
 
 local util = require("lib.util")
 
@@ -16,6 +17,7 @@ local P = paddy.parameters{
   {name = "schemes", default = "velocity_verlet,euler", description = "time integration schemes (sim:integration)"},
   {name = "gaps", default = 16, type = "integer", min = 1, max = 1000, description = "starting gaps per value (10 to 20 um)"},
   {name = "speed", default = 0.5, unit = "m/s", min = 1e-3, max = 10, description = "impact speed"},
+  {name = "pictures", default = true, description = "draw restitution_step.png with gnuplot"},
 }
 
 local R = 1e-3
@@ -58,4 +60,29 @@ for _, scheme in ipairs(schemes) do
 end
 util.write_csv("restitution_step.csv", {"scheme", "restitution", "step_fraction", "measured_mean", "measured_min",
                                          "measured_max", "relative_error"}, rows)
-paddy.result{gaps = P.gaps, speed = P.speed, radius = R, values = table_out}
+
+-- The picture: |relative error| against the step, one line per scheme and restitution (a first-
+-- order scheme's lines have slope 1, a second-order one's 2).
+local picture
+if P.pictures then
+  local blocks, plots = {}, {}
+  local k = 0
+  for _, scheme in ipairs(schemes) do
+    for _, e in ipairs(util.numbers(P.restitutions, "restitutions")) do
+      local lines = {}
+      for _, r in ipairs(rows) do
+        if r[1] == scheme and r[2] == e then lines[#lines + 1] = string.format("%.9g %.9g", r[3], math.max(1e-6, 100 * math.abs(r[7]))) end
+      end
+      blocks[#blocks + 1] = table.concat(lines, "\n")
+      plots[#plots + 1] = string.format("'restitution_step.dat' index %d using 1:2 with linespoints dt %d lw 2 title '%s, e = %g'",
+                                        k, scheme == "euler" and 2 or 1, scheme, e)
+      k = k + 1
+    end
+  end
+  util.write_file(util.out("restitution_step.dat"), table.concat(blocks, "\n\n\n") .. "\n")
+  picture = util.gnuplot("restitution_step", "set logscale xy\nset xrange [0.008:0.3]\nset xlabel 'time step / Rayleigh time'\n" ..
+    "set ylabel '|measured / set restitution - 1| [%], mean of " .. P.gaps .. " impacts'\nset key left top\nset grid\n" ..
+    "cd " .. util.gnuplot_text(paddy.out_dir) .. "\nplot " .. table.concat(plots, ", \\\n  "))
+end
+paddy.result{gaps = P.gaps, speed = P.speed, radius = R, values = table_out, picture = picture}
+if picture then print("picture  " .. picture) end

@@ -88,6 +88,16 @@ elseif(CASE MATCHES "^(rheology_share|fill_structure|pour|conventions|phases|moh
   expect_code(${code} 0)
   result(ok ok)
 
+elseif(CASE STREQUAL "restitution_step")
+  # The restitution example (docs/physics.md §3): both schemes, one restitution, two steps, 4 impacts each.
+  run_paddy(code se run ${SOURCE}/experiments/examples/restitution_step.lua --out rs --set restitutions=0.13
+            --set fractions=0.1,0.01 --set gaps=4 --set pictures=false)
+  expect_code(${code} 0)
+  expect_outputs(rs restitution_step.csv result.json)
+  run_paddy(code se run ${HERE}/check_restitution_step.lua --set dir=${WORK}/rs --out out)
+  expect_code(${code} 0)
+  result(ok ok)
+
 elseif(CASE STREQUAL "timestep_damping")
   run_paddy(code se run ${HERE}/timestep_damping.lua --out out --threads 1)
   expect_code(${code} 0)
