@@ -40,45 +40,39 @@ end
 
 local schemes = {}
 for s in tostring(P.schemes):gmatch("[^,%s]+") do schemes[#schemes + 1] = s end
-local rows, table_out = {}, {}
+local restitutions, fractions = util.numbers(P.restitutions, "restitutions"), util.numbers(P.fractions, "fractions")
+-- rows for the CSV, table_out for result.json; blocks and plots for the picture (one line per
+-- scheme and restitution: |relative error| against the step).
+local rows, table_out, blocks, plots = {}, {}, {}, {}
 for _, scheme in ipairs(schemes) do
-  for _, e in ipairs(util.numbers(P.restitutions, "restitutions")) do
-    for _, f in ipairs(util.numbers(P.fractions, "fractions")) do
+  for _, e in ipairs(restitutions) do
+    local lines = {}
+    for _, f in ipairs(fractions) do
       local sum, lo, hi = 0, math.huge, -math.huge
       for k = 0, P.gaps - 1 do
         local r = rebound(scheme, e, f, 1e-5 * (1 + k / P.gaps))
         sum, lo, hi = sum + r, math.min(lo, r), math.max(hi, r)
       end
       local mean = sum / P.gaps
-      rows[#rows + 1] = {scheme, e, f, mean, lo, hi, mean / e - 1}
+      local err = mean / e - 1
+      rows[#rows + 1] = {scheme, e, f, mean, lo, hi, err}
       table_out[#table_out + 1] = {scheme = scheme, restitution = e, step_fraction = f, measured = mean,
-                                   min = lo, max = hi, relative_error = mean / e - 1}
+                                   min = lo, max = hi, relative_error = err}
+      lines[#lines + 1] = string.format("%.9g %.9g", f, math.max(1e-6, 100 * math.abs(err)))
       print(string.format("%-16s e %-5g step %-5g T_R   measured %.5f (%.5f-%.5f)   %+6.2f %%", scheme, e, f, mean,
-                          lo, hi, 100 * (mean / e - 1)))
+                          lo, hi, 100 * err))
     end
+    blocks[#blocks + 1] = table.concat(lines, "\n")
+    plots[#plots + 1] = string.format("'restitution_step.dat' index %d using 1:2 with linespoints dt %d lw 2 title '%s, e = %g'",
+                                      #blocks - 1, scheme == "euler" and 2 or 1, scheme, e)
   end
 end
 util.write_csv("restitution_step.csv", {"scheme", "restitution", "step_fraction", "measured_mean", "measured_min",
                                          "measured_max", "relative_error"}, rows)
 
--- The picture: |relative error| against the step, one line per scheme and restitution (a first-
--- order scheme's lines have slope 1, a second-order one's 2).
+-- The picture (a first-order scheme's lines have slope 1, a second-order one's 2).
 local picture
 if P.pictures then
-  local blocks, plots = {}, {}
-  local k = 0
-  for _, scheme in ipairs(schemes) do
-    for _, e in ipairs(util.numbers(P.restitutions, "restitutions")) do
-      local lines = {}
-      for _, r in ipairs(rows) do
-        if r[1] == scheme and r[2] == e then lines[#lines + 1] = string.format("%.9g %.9g", r[3], math.max(1e-6, 100 * math.abs(r[7]))) end
-      end
-      blocks[#blocks + 1] = table.concat(lines, "\n")
-      plots[#plots + 1] = string.format("'restitution_step.dat' index %d using 1:2 with linespoints dt %d lw 2 title '%s, e = %g'",
-                                        k, scheme == "euler" and 2 or 1, scheme, e)
-      k = k + 1
-    end
-  end
   util.write_file(util.out("restitution_step.dat"), table.concat(blocks, "\n\n\n") .. "\n")
   picture = util.gnuplot("restitution_step", "set logscale xy\nset xrange [0.008:0.3]\nset xlabel 'time step / Rayleigh time'\n" ..
     "set ylabel '|measured / set restitution - 1| [%], mean of " .. P.gaps .. " impacts'\nset key left top\nset grid\n" ..

@@ -380,11 +380,12 @@ function M.describe(P)
   local i = P.material_info
   local v = i.values
   local conv = M.conventions[i.conventions]
-  local rolling = i.rolling ~= conv.rolling and string.format(" (rolling %s)", i.rolling) or ""
-  if i.lift_rolling and i.lift_rolling ~= i.rolling then rolling = rolling .. string.format(" (from the lift on: rolling %s)", i.lift_rolling) end
-  if i.integration and i.integration ~= conv.integration then rolling = rolling .. string.format(" (integration %s)", i.integration) end
+  -- what the run chose apart from its conventions
+  local overrides = i.rolling ~= conv.rolling and string.format(" (rolling %s)", i.rolling) or ""
+  if i.lift_rolling and i.lift_rolling ~= i.rolling then overrides = overrides .. string.format(" (from the lift on: rolling %s)", i.lift_rolling) end
+  if i.integration and i.integration ~= conv.integration then overrides = overrides .. string.format(" (integration %s)", i.integration) end
   return string.format("conventions %s%s; material %s (%s): e %.3g/%.3g, mu %.3g/%.3g, mu_r %.3g/%.3g (mud-mud/mud-steel), gamma %.3g J/m^2 at 2 mm%s\n            step %.3g T_R%s from %s",
-    i.conventions, rolling, i.name, (i.source:match("^[^(,;]+"):gsub("%s+$", "")), v.mud_mud_restitution, v.mud_steel_restitution,
+    i.conventions, overrides, i.name, (i.source:match("^[^(,;]+"):gsub("%s+$", "")), v.mud_mud_restitution, v.mud_steel_restitution,
     v.mud_mud_friction, v.mud_steel_friction, v.mud_mud_rolling_friction, v.mud_steel_rolling_friction,
     v.jkr_surface_energy, #i.given > 0 and ("; given with --set: " .. table.concat(i.given, ", ")) or "",
     P.timestep_fraction, P.timestep_damping and " (shortened below e = 0.13)" or "", i.timestep_from)

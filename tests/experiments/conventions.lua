@@ -69,11 +69,16 @@ check(not ok and msg:find("material = 'clay'", 1, true) and msg:find("paddy_mud.
 check(not pcall(function() return mud.resolve(declared(), {}).mud_mud_fricton end), "a typo must fail")
 
 -- The sub-models each conventions selects (a stand-in simulation records the interactions).
+-- A stand-in for a simulation that records into rec what mud.setup hands it: each pair's law under
+-- "a-b", the integration scheme under `integration`.
+local function recording_sim(rec)
+  return {material = function(_, m) return m.name end,
+          interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end,
+          integration = function(_, scheme) rec.integration = scheme end}
+end
 local function laws(conventions)
   local rec = {}
-  local sim = {material = function(_, m) return m.name end,
-               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end,
-               integration = function(_, scheme) rec.integration = scheme end}
+  local sim = recording_sim(rec)
   local P = mud.resolve(declared{contact_conventions = conventions}, {})
   mud.setup(sim, P, P)
   return rec
@@ -89,9 +94,7 @@ check(e["mud-mud"].surface_energy == reference.jkr_surface_energy, "edem gamma %
 -- set_interactions replaces the laws with the new choice (slump.lua's lift_rolling_integration).
 local function laws_with(conventions, integration)
   local rec = {}
-  local sim = {material = function(_, m) return m.name end,
-               interaction = function(_, a, b, spec) rec[a .. "-" .. b] = spec end,
-               integration = function(_, scheme) rec.integration = scheme end}
+  local sim = recording_sim(rec)
   local P = mud.resolve(declared{contact_conventions = conventions, rolling_integration = integration}, {})
   mud.setup(sim, P, P)
   return rec, P, sim
@@ -118,8 +121,7 @@ check(ei.integration == "velocity_verlet" and pc.integration == "velocity_verlet
       tostring(ei.integration), tostring(pc.integration))
 do
   local rec = {}
-  local sim = {material = function(_, m) return m.name end, interaction = function() end,
-               integration = function(_, scheme) rec.integration = scheme end}
+  local sim = recording_sim(rec)
   local P = mud.resolve(declared{contact_conventions = "edem", time_integration = "euler"}, {})
   mud.setup(sim, P, P)
   check(rec.integration == "euler" and P.material_info.integration == "euler", "edem + euler: %s", tostring(rec.integration))

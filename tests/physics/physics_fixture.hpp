@@ -23,6 +23,16 @@ inline std::shared_ptr<PluginManager> shippedPlugins() {
 inline Material mudMaterial() { return {"mud", 1680.0, 1e6, 0.5}; }
 inline Material steelMaterial() { return {"steel", 7800.0, 7e9, 0.3}; }
 
+// Hertz + Hertz-Mindlin damping + Mindlin with restitution e and friction mu.
+inline InteractionSpec hertzMindlin(double e, double mu) {
+  InteractionSpec s;
+  s.normal = "hertz";
+  s.damping = "hertz_mindlin";
+  s.tangential = "mindlin";
+  s.params = {{"restitution", e}, {"friction", mu}};
+  return s;
+}
+
 // A simulation with mud particles and a steel floor at z = 0 (normal +z).
 struct FloorSetup {
   std::unique_ptr<Simulation> sim;
@@ -48,11 +58,7 @@ inline FloorSetup mudOnSteelFloor(const InteractionSpec& mud_steel) {
 inline double rollDownIncline(const std::string& rolling, double tan_theta, double mu_r, double dt_fraction,
                               double duration, Vec3* omega_out, double* half_way = nullptr) {
   const double R = 1e-3, g = 9.81;
-  InteractionSpec spec;
-  spec.normal = "hertz";
-  spec.damping = "hertz_mindlin";
-  spec.tangential = "mindlin";
-  spec.params = {{"restitution", 0.3}, {"friction", 0.9}};
+  InteractionSpec spec = hertzMindlin(0.3, 0.9);
   spec.rolling = rolling;
   spec.params["rolling_friction"] = mu_r;
   auto s = mudOnSteelFloor(spec);

@@ -12,22 +12,13 @@
 using namespace paddy;
 
 namespace {
-InteractionSpec hertzDamped(double e) {
-  InteractionSpec s;
-  s.normal = "hertz";
-  s.damping = "hertz_mindlin";
-  s.tangential = "mindlin";
-  s.params = {{"restitution", e}, {"friction", 0.0}};
-  return s;
-}
-
 // Rebound speed / impact speed of a sphere (R = 1 mm) hitting the floor at 0.5 m/s without
 // gravity, averaged over 16 starting gaps: where the contact begins within a step moves a single
 // impact's result by up to ±2 % at 0.1 T_R, the mean over the gaps keeps the step's own error.
 double restitution(TimeIntegration scheme, double e, double dt_fraction) {
   double sum = 0.0;
   for (int k = 0; k < 16; ++k) {
-    auto s = test::mudOnSteelFloor(hertzDamped(e));
+    auto s = test::mudOnSteelFloor(test::hertzMindlin(e, 0.0));
     const double R = 1e-3, v0 = 0.5;
     s.sim->setGravity(Vec3::Zero());
     s.sim->setTimeIntegration(scheme);
@@ -47,7 +38,7 @@ double restitution(TimeIntegration scheme, double e, double dt_fraction) {
 // the energy per step of contact).
 TEST_CASE("semi-implicit Euler: an undamped bounce keeps its height over 30 bounces, as velocity Verlet", "[physics][integrator]") {
   for (TimeIntegration scheme : {TimeIntegration::SymplecticEuler, TimeIntegration::VelocityVerlet}) {
-    auto s = test::mudOnSteelFloor(hertzDamped(1.0));
+    auto s = test::mudOnSteelFloor(test::hertzMindlin(1.0, 0.0));
     const double R = 1e-3, h0 = 0.02;
     s.sim->setTimeIntegration(scheme);
     s.sim->setTimeStepFraction(0.2);

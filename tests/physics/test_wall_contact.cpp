@@ -10,15 +10,6 @@
 using namespace paddy;
 
 namespace {
-InteractionSpec hertzMindlin(double e, double mu) {
-  InteractionSpec s;
-  s.normal = "hertz";
-  s.damping = "hertz_mindlin";
-  s.tangential = "mindlin";
-  s.params = {{"restitution", e}, {"friction", mu}};
-  return s;
-}
-
 // Settles a sphere of radius R on the floor (no gravity needed later) and returns its set-up.
 test::FloorSetup restingSphere(const InteractionSpec& spec, double R, const Vec3& v, const Vec3& w) {
   auto s = test::mudOnSteelFloor(spec);
@@ -35,7 +26,7 @@ test::FloorSetup restingSphere(const InteractionSpec& spec, double R, const Vec3
 
 TEST_CASE("restitution against a wall matches the setting within 1 %", "[physics][restitution]") {
   for (double e : {0.1, 0.5, 0.9}) {
-    auto s = test::mudOnSteelFloor(hertzMindlin(e, 0.0));
+    auto s = test::mudOnSteelFloor(test::hertzMindlin(e, 0.0));
     const double R = 1e-3, v0 = 0.5;
     s.sim->setGravity(Vec3::Zero());
     s.sim->setTimeStepFraction(0.02);  // see docs/physics.md for the error at larger steps
@@ -50,7 +41,7 @@ TEST_CASE("restitution against a wall matches the setting within 1 %", "[physics
 
 TEST_CASE("a sliding sphere decelerates at mu g and ends rolling at 5/7 v0", "[physics][coulomb]") {
   const double R = 1e-3, mu = 0.3, v0 = 0.2, g = 9.81;
-  auto s = restingSphere(hertzMindlin(0.3, mu), R, Vec3(v0, 0, 0), Vec3::Zero());
+  auto s = restingSphere(test::hertzMindlin(0.3, mu), R, Vec3(v0, 0, 0), Vec3::Zero());
   auto& sim = *s.sim;
   // Pure sliding phase lasts t* = 2 v0 / (7 mu g); check the deceleration before it ends.
   const double t_star = 2.0 * v0 / (7.0 * mu * g);
@@ -70,7 +61,7 @@ TEST_CASE("rolling resistance stops a rolling sphere at the closed-form distance
   // Constant torque mu_r F_n R opposing the rotation: a = 5/7 mu_r g, distance v0^2 / (2 a).
   const double R = 1e-3, mu_r = 0.1, v0 = 0.05, g = 9.81;
   for (const char* model : {"constant_torque", "elastic_plastic"}) {
-    auto spec = hertzMindlin(0.3, 0.5);
+    auto spec = test::hertzMindlin(0.3, 0.5);
     spec.rolling = model;
     spec.params["rolling_friction"] = mu_r;
     auto s = restingSphere(spec, R, Vec3(v0, 0, 0), Vec3(0, v0 / R, 0));

@@ -196,6 +196,12 @@ const char* timeIntegrationName(TimeIntegration scheme) {
   return scheme == TimeIntegration::SymplecticEuler ? "euler" : "velocity_verlet";
 }
 
+TimeIntegration timeIntegrationFromName(const std::string& name) {
+  for (TimeIntegration scheme : {TimeIntegration::VelocityVerlet, TimeIntegration::SymplecticEuler})
+    if (name == timeIntegrationName(scheme)) return scheme;
+  throw InputError("'" + name + "' is not a scheme; choose velocity_verlet or euler");
+}
+
 void Simulation::setTimeIntegration(TimeIntegration scheme) { impl_->integration = scheme; }
 TimeIntegration Simulation::timeIntegration() const { return impl_->integration; }
 

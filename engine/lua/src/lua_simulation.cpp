@@ -189,10 +189,11 @@ int timestep(lua_State* L) {
 int integration(lua_State* L) {
   SimHandle& h = checkSim(L, 1);
   if (!lua_isnoneornil(L, 2)) {
-    const std::string name = luaL_checkstring(L, 2);
-    if (name == "velocity_verlet") h.sim->setTimeIntegration(TimeIntegration::VelocityVerlet);
-    else if (name == "euler") h.sim->setTimeIntegration(TimeIntegration::SymplecticEuler);
-    else throw InputError("sim:integration: '" + name + "' is not a scheme; choose velocity_verlet or euler");
+    try {
+      h.sim->setTimeIntegration(timeIntegrationFromName(luaL_checkstring(L, 2)));
+    } catch (const InputError& e) {
+      throw InputError(std::string("sim:integration: ") + e.what());
+    }
   }
   lua_pushstring(L, timeIntegrationName(h.sim->timeIntegration()));
   return 1;

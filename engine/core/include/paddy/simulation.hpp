@@ -71,6 +71,8 @@ struct TimeStepPolicy {
 //                        (docs/physics.md §6).
 enum class TimeIntegration { VelocityVerlet, SymplecticEuler };
 const char* timeIntegrationName(TimeIntegration scheme);  // "velocity_verlet", "euler"
+// The scheme of that name; throws InputError naming the choices for any other name.
+TimeIntegration timeIntegrationFromName(const std::string& name);
 
 class Simulation {
  public:
