@@ -80,12 +80,17 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
 
 #pragma omp parallel num_threads(nthreads)
   {
-    if (predicted) {
-      // Before any thread clears the force arrays the prediction reads (implicit barrier).
-      predictVelocities(s);  // an `omp for` over the particles, with its implicit barrier
-    }
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
+    // This thread's owners (see ownerRange): read before thread 0 rebalances them below.
+    const std::pair<std::size_t, std::size_t> range = ownerRange(t, nt, n);
+    const std::size_t lo = range.first, hi = range.second;
+    if (predicted) {
+      // Every thread's prediction before any reads a partner's, and before one thread at a step
+      // writes the force arrays the prediction reads.
+      predictVelocities(s, lo, hi);
+#pragma omp barrier
+    }
     ThreadBuffers& tb = threads[static_cast<std::size_t>(t)];
     // One thread at a step sums straight into the particle arrays. Otherwise each thread sums
     // into its own buffers, clearing first only what its last pass wrote: its owners and their
@@ -176,22 +181,9 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     };
 
     // ---- particle–particle ----------------------------------------------------------------
-    // Owners split so that each thread gets about the same work: by the owners' costs at the
-    // step before (owner_bounds, rebalanceOwners), else by list slots (the half list puts more
-    // slots on some owners than on others; where the packing is loose most slots are out of
-    // range and cheap, where it is dense most are contacts: an even split by slots can leave one
-    // thread with twice the contacts of the other). The split decides only which thread's buffer
-    // a contact's force goes to; the same state gives the same split, so the same results.
-    const auto owner_split = [&](int u) -> std::size_t {
-      if (u <= 0) return 0;
-      if (u >= nt) return n;
-      const std::size_t target = list.start[n] / static_cast<std::size_t>(nt) * static_cast<std::size_t>(u);
-      return static_cast<std::size_t>(std::lower_bound(list.start.begin(), list.start.begin() + static_cast<std::ptrdiff_t>(n), target) -
-                                      list.start.begin());
-    };
-    const bool by_cost = owner_bounds.size() == static_cast<std::size_t>(nt) + 1 && owner_bounds.back() == n;
-    const std::size_t lo = by_cost ? owner_bounds[static_cast<std::size_t>(t)] : owner_split(t);
-    const std::size_t hi = by_cost ? owner_bounds[static_cast<std::size_t>(t) + 1] : owner_split(t + 1);
+    // Owners split so that each thread gets about the same work (ownerRange): the split decides
+    // only which thread's buffer a contact's force goes to; the same state gives the same split,
+    // so the same results.
     std::uint64_t running = 0;
     if (balance) owner_bounds_used[static_cast<std::size_t>(t)] = lo;
     for (std::size_t i = lo; i < hi; ++i) {
@@ -263,13 +255,17 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     // Thread 0's sum first, then thread 1's, ...: a buffer outside its band holds zeros, which
     // the sum skips (x + 0 = x), so the order and the result are those of adding every buffer.
     if (!dry) {
+      // This thread's owners (the same as lo, hi), read before thread 0 rebalances them after
+      // the barrier.
+      const std::pair<std::size_t, std::size_t> mine = ownerRange(t, nt, n);
 #pragma omp barrier
       if (balance && t == 0) rebalanceOwners(n, nt);  // nothing reads the bounds until the next pass
       if (direct) {
         for (std::size_t i = 0; i < n; ++i) p.force[i] += p.mass[i] * s.gravity_;
       } else {
-#pragma omp for schedule(static)
-        for (std::size_t i = 0; i < n; ++i) {
+        // Each thread sums its own owners (the particles it moves at the next step); the
+        // barrier at the end of the parallel region ends the reduction.
+        for (std::size_t i = mine.first; i < mine.second; ++i) {
           Vec3 f = Vec3::Zero(), tq = Vec3::Zero();
           double rs = 0.0;
           bool first = true;
@@ -314,6 +310,25 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   for (std::size_t c = 0; c < n_wall; ++c) s.walls_[wall_of_found[c]]->addLoad(-wall_force[c], wall_found[c].point);
   if (!s.walls_.empty()) storeWallHistory(s, wall_hist);
   forces_valid = true;
+}
+
+// Thread t's owners: by the costs of the pass before (owner_bounds, rebalanceOwners), else by
+// list slots (the half list puts more slots on some owners than on others; where the packing is
+// loose most slots are out of range and cheap, where it is dense most are contacts: an even split
+// by slots can leave one thread with twice the contacts of the other), else by particles.
+std::pair<std::size_t, std::size_t> Simulation::Impl::ownerRange(int t, int nt, std::size_t n) const {
+  if (nt <= 1) return {0, n};
+  const auto ts = static_cast<std::size_t>(t), nts = static_cast<std::size_t>(nt);
+  if (owner_bounds.size() == nts + 1 && owner_bounds.back() == n) return {owner_bounds[ts], owner_bounds[ts + 1]};
+  if (list.start.size() != n + 1) return {n * ts / nts, n * (ts + 1) / nts};
+  const auto split = [&](std::size_t u) -> std::size_t {
+    if (u == 0) return 0;
+    if (u >= nts) return n;
+    const std::size_t target = list.start[n] / nts * u;
+    return static_cast<std::size_t>(std::lower_bound(list.start.begin(), list.start.begin() + static_cast<std::ptrdiff_t>(n), target) -
+                                    list.start.begin());
+  };
+  return {split(ts), split(ts + 1)};
 }
 
 // The owners' split for the next pass: boundary u where the running cost of this pass reaches

@@ -126,8 +126,12 @@ bool Simulation::Impl::listStale(const Simulation& s, double largest_displacemen
   const Vec3 c = 0.5 * (box_lo + box_hi);
   const Vec3* x_build = list.x_at_build.data();
   double e2 = 0.0;
-#pragma omp parallel for schedule(static) num_threads(s.threads_) reduction(max : e2)
-  for (std::size_t i = 0; i < n; ++i) e2 = std::max(e2, (p.position[i] - x_build[i] - c).squaredNorm());
+#pragma omp parallel num_threads(s.threads_) reduction(max : e2)
+  {
+    const auto range = ownerRange(omp_get_thread_num(), omp_get_num_threads(), n);
+    for (std::size_t i = range.first; i < range.second; ++i)
+      e2 = std::max(e2, (p.position[i] - x_build[i] - c).squaredNorm());
+  }
   return 2.0 * std::sqrt(e2) > skin;
 }
 
@@ -158,12 +162,10 @@ void Simulation::Impl::sortSpatially(Simulation& s) {
   permute(prev_index);
 }
 
-void Simulation::Impl::predictVelocities(const Simulation& s) {
+void Simulation::Impl::predictVelocities(const Simulation& s, std::size_t lo, std::size_t hi) {
   const ParticleArrays& p = s.p_;
   const double half = 0.5 * s.dt_;
-  const std::size_t n = p.size();
-#pragma omp for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = lo; i < hi; ++i) {
     v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
     w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
   }
@@ -243,36 +245,46 @@ void Simulation::step(std::uint64_t n) {
     const bool two_refs = m.walls_refreshed;
     const Vec3* x_build = m.list.x_at_build.size() == np ? m.list.x_at_build.data() : nullptr;
     const Vec3* x_refresh = two_refs && m.x_at_wall_refresh.size() == np ? m.x_at_wall_refresh.data() : nullptr;
-    double m2 = 0.0, r2 = 0.0;
-    // The box of the displacements since the list build (listStale).
-    constexpr double kInf = std::numeric_limits<double>::infinity();
-    double lo_x = kInf, lo_y = kInf, lo_z = kInf, hi_x = -kInf, hi_y = -kInf, hi_z = -kInf;
-    bool bad = x_build == nullptr || (two_refs && x_refresh == nullptr);
-#pragma omp parallel for schedule(static) num_threads(threads_) reduction(max : m2, r2, hi_x, hi_y, hi_z) \
-    reduction(min : lo_x, lo_y, lo_z) reduction(|| : bad)
-    for (std::size_t i = 0; i < np; ++i) {
-      const double k_over_m = kick / p_.mass[i], k_over_i = kick / p_.inertia[i];
-      if (closing) {  // Verlet only: kick = dt/2
+    // Each thread moves its own owners (ownerRange) and bounds their displacements.
+    m.drift_extents.assign(static_cast<std::size_t>(std::max(threads_, 1)), Impl::DriftExtent{});
+#pragma omp parallel num_threads(threads_)
+    {
+      const int t = omp_get_thread_num();
+      const auto range = m.ownerRange(t, omp_get_num_threads(), np);
+      Impl::DriftExtent e;
+      for (std::size_t i = range.first; i < range.second; ++i) {
+        const double k_over_m = kick / p_.mass[i], k_over_i = kick / p_.inertia[i];
+        if (closing) {  // Verlet only: kick = dt/2
+          p_.velocity[i] += k_over_m * p_.force[i];
+          p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], k_over_i);
+        }
         p_.velocity[i] += k_over_m * p_.force[i];
         p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], k_over_i);
-      }
-      p_.velocity[i] += k_over_m * p_.force[i];
-      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], k_over_i);
-      p_.position[i] += dt * p_.velocity[i];
-      if (x_build) {
-        const Vec3 dx = p_.position[i] - x_build[i];
-        const double d2 = dx.squaredNorm();
-        if (!std::isfinite(d2)) bad = true;
-        m2 = std::max(m2, d2);
-        lo_x = std::min(lo_x, dx.x()), hi_x = std::max(hi_x, dx.x());
-        lo_y = std::min(lo_y, dx.y()), hi_y = std::max(hi_y, dx.y());
-        lo_z = std::min(lo_z, dx.z()), hi_z = std::max(hi_z, dx.z());
-        if (x_refresh) {
-          const double e2 = (p_.position[i] - x_refresh[i]).squaredNorm();
-          if (!std::isfinite(e2)) bad = true;
-          r2 = std::max(r2, e2);
+        p_.position[i] += dt * p_.velocity[i];
+        if (x_build) {
+          const Vec3 dx = p_.position[i] - x_build[i];
+          const double d2 = dx.squaredNorm();
+          if (!std::isfinite(d2)) e.bad = true;
+          e.m2 = std::max(e.m2, d2);
+          e.lo = e.lo.cwiseMin(dx);
+          e.hi = e.hi.cwiseMax(dx);
+          if (x_refresh) {
+            const double e2 = (p_.position[i] - x_refresh[i]).squaredNorm();
+            if (!std::isfinite(e2)) e.bad = true;
+            e.r2 = std::max(e.r2, e2);
+          }
         }
       }
+      m.drift_extents[static_cast<std::size_t>(t)] = e;
+    }
+    double m2 = 0.0, r2 = 0.0;
+    Vec3 box_lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 box_hi = -box_lo;
+    bool bad = x_build == nullptr || (two_refs && x_refresh == nullptr);
+    for (const Impl::DriftExtent& e : m.drift_extents) {
+      m2 = std::max(m2, e.m2), r2 = std::max(r2, e.r2);
+      box_lo = box_lo.cwiseMin(e.lo), box_hi = box_hi.cwiseMax(e.hi);
+      bad = bad || e.bad;
     }
     closing_kick_due = false;
     time_ += dt;
@@ -295,7 +307,7 @@ void Simulation::step(std::uint64_t n) {
     // The particle list goes stale with the particles' displacements since its build; the walls'
     // candidate lists with a particle's and a wall's together since their last refresh (which
     // may be later than the build: refreshWalls).
-    const bool list_stale = np > 0 && m.listStale(*this, disp, Vec3(lo_x, lo_y, lo_z), Vec3(hi_x, hi_y, hi_z));
+    const bool list_stale = np > 0 && m.listStale(*this, disp, box_lo, box_hi);
     double wall_disp = 0.0;
     for (const auto& w : walls_) wall_disp = std::max(wall_disp, w->displacementSinceListBuild());
     const bool walls_stale = !walls_.empty() && disp_refresh + wall_disp > m.skin;
@@ -312,10 +324,13 @@ void Simulation::step(std::uint64_t n) {
     closing_kick_due = !euler;
   }
   if (closing_kick_due) {
-#pragma omp parallel for schedule(static) num_threads(threads_)
-    for (std::size_t i = 0; i < np; ++i) {
-      p_.velocity[i] += (half / p_.mass[i]) * p_.force[i];
-      p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], half / p_.inertia[i]);
+#pragma omp parallel num_threads(threads_)
+    {
+      const auto range = m.ownerRange(omp_get_thread_num(), omp_get_num_threads(), np);
+      for (std::size_t i = range.first; i < range.second; ++i) {
+        p_.velocity[i] += (half / p_.mass[i]) * p_.force[i];
+        p_.omega[i] = kickRotation(p_.omega[i], p_.torque[i], p_.resisting_torque[i], half / p_.inertia[i]);
+      }
     }
   }
 }

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace paddy {
@@ -108,6 +109,15 @@ struct Simulation::Impl {
   // owner indices; empty after a list build, until a step has counted (then split by slots).
   static constexpr std::uint64_t kContactCost = 16;
   std::vector<std::size_t> owner_bounds, owner_bounds_used;
+  // Thread t's owners [first, second) of nt: by owner_bounds when it holds a split for nt threads,
+  // else an even split of the list's slots (an even split of the particles without a list). The
+  // per-particle loops (kicks, drift, velocity prediction, the force reduction) use the same
+  // range: each thread then moves, predicts and sums the particles whose contacts it evaluates,
+  // which stay in its core's cache (with a split of their own, a few thousand particles' data
+  // crossed between the cores at every loop). Which thread moves a particle does not change its
+  // numbers; which thread sums a contact does (the reduction's order), so the split is kept in
+  // checkpoints.
+  std::pair<std::size_t, std::size_t> ownerRange(int t, int nt, std::size_t n) const;
   std::vector<std::uint64_t> owner_cost_sum;     // per owner: running cost within its thread's range
   std::vector<std::uint64_t> owner_thread_cost;  // per thread: its range's cost
   void rebalanceOwners(std::size_t n, int nt);
@@ -116,13 +126,13 @@ struct Simulation::Impl {
 
   // Velocities at the end of the step, predicted as v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m, used by
   // velocity-dependent laws (damping) at a step. predictVelocities (integrator.cpp, beside the
-  // kicks it repeats) is a worksharing loop over all particles: computeForces calls it inside its
-  // parallel region (an orphaned `omp for`; outside a parallel region one thread does all).
+  // kicks it repeats) predicts the particles [lo, hi): computeForces calls it inside its parallel
+  // region, each thread for its own owners (ownerRange), before a barrier.
   std::vector<Vec3> v_eval, w_eval;
   TimeIntegration integration = TimeIntegration::VelocityVerlet;
   // Only velocity Verlet predicts (the Euler scheme's forces see the velocities of the step).
   bool predictsVelocities() const { return integration == TimeIntegration::VelocityVerlet; }
-  void predictVelocities(const Simulation& s);
+  void predictVelocities(const Simulation& s, std::size_t lo, std::size_t hi);
 
   std::vector<ContactRecord> last_records;
   std::uint64_t active_contacts = 0;
@@ -149,6 +159,16 @@ struct Simulation::Impl {
   // Whether the particle list may miss a pair, from the displacements since its build: the
   // largest and the box that holds them all (integrator.cpp).
   bool listStale(const Simulation& s, double largest_displacement, const Vec3& box_lo, const Vec3& box_hi) const;
+  // One thread's share of a step's drift (integrator.cpp): the largest squared displacements since
+  // the list build and since the walls' refresh, the box of the displacements, and whether one
+  // was not finite. Combined over the threads after the loop (max, min, or: exact in any order).
+  struct DriftExtent {
+    double m2 = 0.0, r2 = 0.0;
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity());
+    Vec3 hi = Vec3::Constant(-std::numeric_limits<double>::infinity());
+    bool bad = false;
+  };
+  std::vector<DriftExtent> drift_extents;
   void refreshWalls(Simulation& s);
   // Candidate lists of all walls for particles at x (current radii), marked built now.
   void buildWallCandidates(Simulation& s, const std::vector<Vec3>& x);
