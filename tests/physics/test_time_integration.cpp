@@ -83,3 +83,46 @@ TEST_CASE("semi-implicit Euler: restitution converges at first order in the step
     REQUIRE(std::abs(err[3]) < 0.01);
   }
 }
+
+// A spatial re-sort between list builds reorders every particle array (positions, velocities,
+// spins, forces, torques, resisting torques) and the contacts' history, and velocity Verlet's
+// force pass then damps each contact with the velocities predicted for its two spheres. A damped
+// pile of spheres (Hertz-Mindlin damping and friction: forces that depend on the velocities) falls
+// onto the floor, once re-sorted at every list build and once never. The sums run in another
+// order, so the two runs agree to rounding, not bit for bit. An array left behind by a re-sort
+// moves a sphere with another's data and is off by far more than 1e-12 m. (A prediction computed
+// before the re-sort and not permuted with it failed by 0.36 µm.)
+TEST_CASE("a spatial re-sort changes a damped pile only by rounding", "[physics][integrator]") {
+  auto run = [](int sort_interval, std::size_t* builds) {
+    auto s = test::mudOnSteelFloor(test::hertzMindlin(0.3, 0.5));
+    s.sim->setGravity(Vec3(0, 0, -9.81));
+    s.sim->setSkinFraction(0.05);  // a list build every few steps
+    s.sim->setSortInterval(sort_interval);
+    s.sim->setTimeStepFraction(0.2);
+    const double R = 1e-3;
+    for (int k = 0; k < 5; ++k)
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i) {
+          // a fixed jitter, and the spheres added top layer first (the re-sort reorders them)
+          const double e = 2e-4 * R * std::sin(1.0 + i * 7.1 + j * 3.3 + k * 5.7);
+          s.sim->addParticle(Vec3(i * 2.05 * R + e, j * 2.05 * R - e, (10.0 - 2.05 * k) * R + e), R, s.mud);
+        }
+    s.sim->run(0.03);  // the bottom layer lands after 15 ms, the others on it
+    *builds = s.sim->neighbourListBuilds();
+    // the layers have landed on each other and rebound (damped sphere-sphere and floor contacts)
+    double up = 0.0;
+    for (const Vec3& v : s.sim->particles().velocity) up = std::max(up, v.z());
+    REQUIRE(up > 1e-3);
+    REQUIRE(s.sim->contacts().size() >= 25);
+    std::vector<Vec3> x(s.sim->particles().size());
+    for (std::size_t i = 0; i < x.size(); ++i) x[s.sim->particles().id[i]] = s.sim->particles().position[i];
+    return x;
+  };
+  std::size_t builds_sorted = 0, builds_unsorted = 0;
+  const auto sorted = run(1, &builds_sorted);
+  const auto unsorted = run(0, &builds_unsorted);
+  REQUIRE(builds_sorted > 20);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < sorted.size(); ++i) worst = std::max(worst, (sorted[i] - unsorted[i]).norm());
+  CHECK(worst < 1e-12);
+}
