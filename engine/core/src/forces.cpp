@@ -82,7 +82,8 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   {
     const int t = omp_get_thread_num();
     const int nt = omp_get_num_threads();
-    // This thread's owners (see ownerRange): read before thread 0 rebalances them below.
+    // This thread's owners (see ownerRange), read before thread 0 rebalances them below: the
+    // pair loop and the reduction both use them.
     const std::pair<std::size_t, std::size_t> range = ownerRange(t, nt, n);
     const std::size_t lo = range.first, hi = range.second;
     if (predicted) {
@@ -255,9 +256,6 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     // Thread 0's sum first, then thread 1's, ...: a buffer outside its band holds zeros, which
     // the sum skips (x + 0 = x), so the order and the result are those of adding every buffer.
     if (!dry) {
-      // This thread's owners (the same as lo, hi), read before thread 0 rebalances them after
-      // the barrier.
-      const std::pair<std::size_t, std::size_t> mine = ownerRange(t, nt, n);
 #pragma omp barrier
       if (balance && t == 0) rebalanceOwners(n, nt);  // nothing reads the bounds until the next pass
       if (direct) {
@@ -265,7 +263,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       } else {
         // Each thread sums its own owners (the particles it moves at the next step); the
         // barrier at the end of the parallel region ends the reduction.
-        for (std::size_t i = mine.first; i < mine.second; ++i) {
+        for (std::size_t i = lo; i < hi; ++i) {
           Vec3 f = Vec3::Zero(), tq = Vec3::Zero();
           double rs = 0.0;
           bool first = true;
