@@ -2,6 +2,8 @@
 // resting on a meshed plate carries its weight (Hertz overlap), rolls down a meshed incline with
 // a = 5/7 g sin θ across triangle edges and a 6-triangle vertex, bounces off a meshed plate as off
 // the analytic PlaneWall, and a slump cone holds a pile of particles until it is lifted.
+#include "../physics/physics_fixture.hpp"
+
 #include <paddy/geometry/mesh_wall.hpp>
 #include <paddy/geometry/parts.hpp>
 #include <paddy/plane_wall.hpp>
@@ -32,17 +34,10 @@ std::shared_ptr<PluginManager> plugins() {
   return pm;
 }
 
-InteractionSpec hertzMindlin(double restitution, double friction) {
-  InteractionSpec s;
-  s.normal = "hertz";
-  s.damping = "hertz_mindlin";
-  s.tangential = "mindlin";
-  s.params = {{"restitution", restitution}, {"friction", friction}};
-  return s;
-}
+using test::hertzMindlin;  // Hertz + Hertz-Mindlin damping + Mindlin, as in the physics tests
 
-const Material kMud{"mud", 1680.0, 1e6, 0.5};
-const Material kSteel{"steel", 7800.0, 7e9, 0.3};
+const Material kMud = test::mudMaterial();
+const Material kSteel = test::steelMaterial();
 
 double eStar() {
   const double e_mud = kMud.youngs(), e_steel = kSteel.youngs();
