@@ -12,6 +12,11 @@
 
 namespace paddy {
 
+namespace {
+// List slots per chunk of the pair loop's distance tests (an owner with more slots takes several).
+constexpr std::size_t kSlotChunk = 64;
+}  // namespace
+
 void Simulation::Impl::prepareThreads(std::size_t n, int n_threads) {
   // The buffers keep their size between steps: re-initialise only when something changed (the
   // history scratch of a dry pass is overwritten contact by contact before every use).
@@ -58,18 +63,13 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   const std::size_t n_wall = wall_found.size();
   std::vector<Vec3>& wall_force = wall_scratch_force;
   wall_force.assign(n_wall, Vec3::Zero());
-  // Velocities the contact laws see: at a step, predicted to the end of the step (see
-  // predictVelocities); otherwise the current ones.
+  // The bodies as the pair loop reads them (packBodies), with the velocities the contact laws see:
+  // at a step predicted to the end of the step (see predictVelocities), otherwise the current ones.
   const bool predicted = pass == ForcePass::Step && predictsVelocities();
-  if (predicted) {
-    v_eval.resize(n);
-    w_eval.resize(n);
-  } else {
-    v_eval.clear();
-    w_eval.clear();
-  }
-  const Vec3* vel = predicted ? v_eval.data() : p.velocity.data();
-  const Vec3* omg = predicted ? w_eval.data() : p.omega.data();
+  body_shape.resize(n);
+  body_motion.resize(n);
+  const BodyShape* S = body_shape.data();
+  const BodyMotion* M = body_motion.data();
   // Count the owners' costs for the next pass's split (more than one thread, forces kept).
   const bool balance = !dry && nthreads > 1;
   if (balance) {
@@ -86,12 +86,10 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     // pair loop and the reduction both use them.
     const std::pair<std::size_t, std::size_t> range = ownerRange(t, nt, n);
     const std::size_t lo = range.first, hi = range.second;
-    if (predicted) {
-      // Every thread's prediction before any reads a partner's, and before one thread at a step
-      // writes the force arrays the prediction reads.
-      predictVelocities(s, lo, hi);
+    // Every thread's bodies packed before any reads a partner's, and before one thread at a step
+    // writes the force arrays the prediction reads.
+    packBodies(s, lo, hi, predicted);
 #pragma omp barrier
-    }
     ThreadBuffers& tb = threads[static_cast<std::size_t>(t)];
     // One thread at a step sums straight into the particle arrays. Otherwise each thread sums
     // into its own buffers, clearing first only what its last pass wrote: its owners and their
@@ -188,37 +186,54 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
     std::uint64_t running = 0;
     if (balance) owner_bounds_used[static_cast<std::size_t>(t)] = lo;
     for (std::size_t i = lo; i < hi; ++i) {
-      const Vec3 xi = p.position[i];
-      const double ri = p.radius[i];
+      const Vec3 xi = S[i].x;
+      const double ri = S[i].r;
       std::uint64_t in_range = 0;
-      for (std::size_t k = list.start[i]; k < list.start[i + 1]; ++k) {
-        const std::uint32_t j = list.partner[k];
-        const Vec3 d = xi - p.position[j];
-        const double d2 = d.squaredNorm();
-        if (d2 >= list.range2[k]) {
-          if (!dry && list.live[k]) {
-            std::fill_n(&list.history[k * stride], stride, 0.0);
-            list.live[k] = 0;
-          }
-          continue;
+      // The owner's slots in chunks of kSlotChunk: first the distance test of every slot, noting
+      // the pairs in range without a branch (whether a listed pair touches is close to random, and
+      // a branch on it is mispredicted often), then the contacts of the pairs noted, in slot order.
+      for (std::size_t k0 = list.start[i], k_end = list.start[i + 1]; k0 < k_end; k0 += kSlotChunk) {
+        const std::size_t k1 = std::min(k_end, k0 + kSlotChunk);
+        std::uint32_t hit[kSlotChunk];
+        std::size_t n_hit = 0;
+        bool separated = false;  // a pair with history out of range
+        for (std::size_t k = k0; k < k1; ++k) {
+          const bool in = (xi - S[list.partner[k]].x).squaredNorm() < list.range2[k];
+          hit[n_hit] = static_cast<std::uint32_t>(k - k0);
+          n_hit += in ? 1 : 0;
+          separated |= !in & (list.live[k] != 0);
         }
-        ++in_range;
-        BatchWork& w = tb.work[static_cast<std::size_t>(list.law[k])];
-        ContactBatch& b = w.batch;
-        const std::size_t m = b.n;
-        const double dist = std::sqrt(d2);
-        const Vec3 nrm = dist > 0.0 ? Vec3(d / dist) : Vec3(0.0, 0.0, 1.0);
-        const double rj = p.radius[j];
-        const double overlap = ri + rj - dist;
-        const Vec3 cj = (rj - 0.5 * overlap) * nrm;
-        const Vec3 vj_contact = vel[j] + omg[j].cross(cj);
-        kernel::fill(b, m, nrm, overlap, ri, rj, p.mass[i], p.mass[j], vel[i], omg[i], vj_contact, omg[j]);
-        if (stride > 0) b.history_at[m] = historySlot(w, m, &list.history[k * stride]);
-        w.i[m] = static_cast<std::uint32_t>(i);
-        w.j[m] = j;
-        w.slot_live[m] = &list.live[k];
-        b.n = m + 1;
-        if (b.n == ContactBatch::kCapacity) flush(w, false);
+        if (separated && !dry) {
+          // A pair that has separated forgets its history (the same test again: the same answer).
+          for (std::size_t k = k0; k < k1; ++k) {
+            if (list.live[k] && (xi - S[list.partner[k]].x).squaredNorm() >= list.range2[k]) {
+              std::fill_n(&list.history[k * stride], stride, 0.0);
+              list.live[k] = 0;
+            }
+          }
+        }
+        in_range += n_hit;
+        for (std::size_t h = 0; h < n_hit; ++h) {
+          const std::size_t k = k0 + hit[h];
+          const std::uint32_t j = list.partner[k];
+          const Vec3 d = xi - S[j].x;
+          BatchWork& w = tb.work[static_cast<std::size_t>(list.law[k])];
+          ContactBatch& b = w.batch;
+          const std::size_t m = b.n;
+          const double dist = std::sqrt(d.squaredNorm());
+          const Vec3 nrm = dist > 0.0 ? Vec3(d / dist) : Vec3(0.0, 0.0, 1.0);
+          const double rj = S[j].r;
+          const double overlap = ri + rj - dist;
+          const Vec3 cj = (rj - 0.5 * overlap) * nrm;
+          const Vec3 vj_contact = M[j].v + M[j].w.cross(cj);
+          kernel::fill(b, m, nrm, overlap, ri, rj, M[i].m, M[j].m, M[i].v, M[i].w, vj_contact, M[j].w);
+          if (stride > 0) b.history_at[m] = historySlot(w, m, &list.history[k * stride]);
+          w.i[m] = static_cast<std::uint32_t>(i);
+          w.j[m] = j;
+          w.slot_live[m] = &list.live[k];
+          b.n = m + 1;
+          if (b.n == ContactBatch::kCapacity) flush(w, false);
+        }
       }
       if (balance) {
         running += (list.start[i + 1] - list.start[i]) + kContactCost * in_range;
@@ -239,7 +254,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       ContactBatch& b = w.batch;
       const std::size_t m = b.n;
       const double inf = std::numeric_limits<double>::infinity();
-      kernel::fill(b, m, wc.normal, wc.overlap, p.radius[i], inf, p.mass[i], inf, vel[i], omg[i],
+      kernel::fill(b, m, wc.normal, wc.overlap, S[i].r, inf, M[i].m, inf, M[i].v, M[i].w,
                    wall.velocityAt(wc.point), wall.angularVelocity());
       if (stride > 0) b.history_at[m] = historySlot(w, m, &wall_hist[c * stride]);
       w.i[m] = i;
@@ -308,6 +323,16 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
   for (std::size_t c = 0; c < n_wall; ++c) s.walls_[wall_of_found[c]]->addLoad(-wall_force[c], wall_found[c].point);
   if (!s.walls_.empty()) storeWallHistory(s, wall_hist);
   forces_valid = true;
+}
+
+void Simulation::Impl::packBodies(const Simulation& s, std::size_t lo, std::size_t hi, bool predicted) {
+  const ParticleArrays& p = s.p_;
+  for (std::size_t i = lo; i < hi; ++i) body_shape[i] = {p.position[i], p.radius[i]};
+  if (predicted) {
+    predictVelocities(s, lo, hi);
+    return;
+  }
+  for (std::size_t i = lo; i < hi; ++i) body_motion[i] = {p.velocity[i], p.omega[i], p.mass[i]};
 }
 
 // Thread t's owners: by the costs of the pass before (owner_bounds, rebalanceOwners), else by

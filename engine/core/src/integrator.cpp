@@ -166,8 +166,8 @@ void Simulation::Impl::predictVelocities(const Simulation& s, std::size_t lo, st
   const ParticleArrays& p = s.p_;
   const double half = 0.5 * s.dt_;
   for (std::size_t i = lo; i < hi; ++i) {
-    v_eval[i] = p.velocity[i] + (half / p.mass[i]) * p.force[i];
-    w_eval[i] = kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]);
+    body_motion[i] = {p.velocity[i] + (half / p.mass[i]) * p.force[i],
+                      kickRotation(p.omega[i], p.torque[i], p.resisting_torque[i], half / p.inertia[i]), p.mass[i]};
   }
 }
 

@@ -124,11 +124,24 @@ struct Simulation::Impl {
   double dt_fraction = 0.0;   // requested as a fraction of the Rayleigh time (0: explicit dt)
   bool dt_explicit = false;
 
-  // Velocities at the end of the step, predicted as v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m, used by
-  // velocity-dependent laws (damping) at a step. predictVelocities (integrator.cpp, beside the
-  // kicks it repeats) predicts the particles [lo, hi): computeForces calls it inside its parallel
-  // region, each thread for its own owners (ownerRange), before a barrier.
-  std::vector<Vec3> v_eval, w_eval;
+  // The force pass's copy of each body, written at its start (packBodies, each thread for its own
+  // owners, before a barrier): where a partner's position, radius, velocities and mass sit in five
+  // arrays, the pair loop would read up to five cache lines per partner; packed it reads one for
+  // the distance test of a list slot (BodyShape) and one more for a pair in range (BodyMotion).
+  // v and w are the velocities the contact laws see: at a step under velocity Verlet those
+  // predicted to the end of the step, v(t+dt) ≈ v(t+dt/2) + dt/2 F(t)/m (predictVelocities,
+  // integrator.cpp, beside the kicks it repeats), otherwise the current ones.
+  struct alignas(32) BodyShape {
+    Vec3 x;
+    double r;
+  };
+  struct alignas(64) BodyMotion {
+    Vec3 v, w;
+    double m;
+  };
+  std::vector<BodyShape> body_shape;
+  std::vector<BodyMotion> body_motion;
+  void packBodies(const Simulation& s, std::size_t lo, std::size_t hi, bool predicted);
   TimeIntegration integration = TimeIntegration::VelocityVerlet;
   // Only velocity Verlet predicts (the Euler scheme's forces see the velocities of the step).
   bool predictsVelocities() const { return integration == TimeIntegration::VelocityVerlet; }
