@@ -236,7 +236,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         }
       }
       if (balance) {
-        running += (list.start[i + 1] - list.start[i]) + kContactCost * in_range;
+        running += kParticleCost + (list.start[i + 1] - list.start[i]) + kContactCost * in_range;
         owner_cost_sum[i] = running;
       }
     }

@@ -104,10 +104,13 @@ struct Simulation::Impl {
 
   std::vector<ThreadBuffers> threads;
   // The owners of the particle–particle loop split among the threads (forces.cpp) by their cost
-  // at the step before: an owner's list slots + kContactCost × its pairs in range (a slot out of
-  // range is one distance test, a pair in range a contact law). owner_bounds holds threads + 1
-  // owner indices; empty after a list build, until a step has counted (then split by slots).
+  // at the step before: kParticleCost + an owner's list slots + kContactCost × its pairs in range
+  // (a slot out of range is one distance test, a pair in range a contact law, and every particle
+  // goes through the per-particle loops that follow the same split: kicks, drift, packing,
+  // prediction, the force reduction). owner_bounds holds threads + 1 owner indices; empty after a
+  // list build, until a step has counted (then split by slots).
   static constexpr std::uint64_t kContactCost = 16;
+  static constexpr std::uint64_t kParticleCost = 16;
   std::vector<std::size_t> owner_bounds, owner_bounds_used;
   // Thread t's owners [first, second) of nt: by owner_bounds when it holds a split for nt threads,
   // else an even split of the list's slots (an even split of the particles without a list). The
