@@ -189,6 +189,8 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
       const Vec3 xi = S[i].x;
       const double ri = S[i].r;
       std::uint64_t in_range = 0;
+      // Whether listed pair k is within its interaction range: one test for both passes below.
+      const auto inRange = [&](std::size_t k) { return (xi - S[list.partner[k]].x).squaredNorm() < list.range2[k]; };
       // The owner's slots in chunks of kSlotChunk: first the distance test of every slot, noting
       // the pairs in range without a branch (whether a listed pair touches is close to random, and
       // a branch on it is mispredicted often), then the contacts of the pairs noted, in slot order.
@@ -198,7 +200,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         std::size_t n_hit = 0;
         bool separated = false;  // a pair with history out of range
         for (std::size_t k = k0; k < k1; ++k) {
-          const bool in = (xi - S[list.partner[k]].x).squaredNorm() < list.range2[k];
+          const bool in = inRange(k);
           hit[n_hit] = static_cast<std::uint32_t>(k - k0);
           n_hit += in ? 1 : 0;
           separated |= !in & (list.live[k] != 0);
@@ -206,7 +208,7 @@ void Simulation::Impl::computeForces(Simulation& s, ForcePass pass) {
         if (separated && !dry) {
           // A pair that has separated forgets its history (the same test again: the same answer).
           for (std::size_t k = k0; k < k1; ++k) {
-            if (list.live[k] && (xi - S[list.partner[k]].x).squaredNorm() >= list.range2[k]) {
+            if (list.live[k] && !inRange(k)) {
               std::fill_n(&list.history[k * stride], stride, 0.0);
               list.live[k] = 0;
             }
